@@ -1,0 +1,27 @@
+// voltree: capture trees from photographs as compact volumetric assets and render them.
+#include <cstdio>
+
+#include "apps/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "voltree captures real trees from photographs as compact volumetric assets and renders them.\n"
+      "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render.\n"
+      "Run 'voltree COMMAND --help' for the options of a command."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "voltree 0.1.0");
+  voltree::app::AddSynthCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const voltree::Error& error) {
+    std::fprintf(stderr, "voltree: error: %s\n", error.what());
+    return 1;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "voltree: internal error: %s\n", error.what());
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,39 @@
+// Safe output: files appear whole or not at all, and a user's data is never overwritten silently.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace voltree {
+
+// Writes `bytes` to `path` via a temporary sibling and rename.
+void WriteFileAtomic(const std::filesystem::path& path, std::string_view bytes);
+std::string ReadFile(const std::filesystem::path& path);
+
+// Throws Error when `path` exists and `force` is false, saying to pass --force.
+void CheckCanWrite(const std::filesystem::path& path, bool force);
+
+// An output folder built in a hidden sibling ("DIR.partial-<pid>") and renamed into place by
+// Commit(); destroyed without Commit() (an error, Ctrl-C through an exception) it removes the
+// partial folder. An existing non-empty DIR is an error unless `force`, then it is replaced
+// only at Commit().
+class StagedDirectory {
+ public:
+  StagedDirectory(std::filesystem::path final_path, bool force);
+  ~StagedDirectory();
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+
+  // Where to write now.
+  const std::filesystem::path& path() const { return staging_; }
+  const std::filesystem::path& final_path() const { return final_; }
+  void Commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path staging_;
+  bool committed_ = false;
+};
+
+}  // namespace voltree

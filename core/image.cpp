@@ -1,0 +1,92 @@
+#include "core/image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace voltree {
+namespace fs = std::filesystem;
+using OIIO::ImageInput;
+using OIIO::ImageOutput;
+using OIIO::ImageSpec;
+using OIIO::TypeDesc;
+
+namespace {
+
+template <typename T>
+Image<T> ConvertChannels(const Image<T>& in, int channels, T opaque) {
+  if (channels <= 0 || channels == in.channels) return in;
+  Image<T> out(in.width, in.height, channels);
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < in.width; ++x) {
+      for (int c = 0; c < channels; ++c) {
+        T value;
+        if (channels == 1)  // a matte: alpha if there is one, else the first channel
+          value = in.channels == 4 || in.channels == 2 ? in.at(x, y, in.channels - 1) : in.at(x, y, 0);
+        else if (c < 3)
+          value = in.channels >= 3 ? in.at(x, y, c) : in.at(x, y, 0);
+        else
+          value = in.channels == 4 ? in.at(x, y, 3) : in.channels == 2 ? in.at(x, y, 1) : opaque;
+        out.at(x, y, c) = value;
+      }
+    }
+  return out;
+}
+
+template <typename T>
+void WriteWithOiio(const fs::path& path, const Image<T>& image, TypeDesc type) {
+  if (image.empty()) Fail(path.string(), ": refusing to write an empty image");
+  if (!path.parent_path().empty()) fs::create_directories(path.parent_path());
+  // Keep the extension on the temporary name: OpenImageIO picks the format from it.
+  const fs::path temporary =
+      path.parent_path() / Str(".", path.stem().string(), ".tmp-", ::getpid(), path.extension().string());
+  auto output = ImageOutput::create(path.string());
+  if (!output) Fail(path.string(), ": no image writer for this extension (", OIIO::geterror(), ")");
+  ImageSpec spec(image.width, image.height, image.channels, type);
+  if (image.channels == 4) spec.alpha_channel = 3;
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels are straight; do not un-premultiply
+  if (!output->open(temporary.string(), spec) || !output->write_image(type, image.pixels.data()) ||
+      !output->close()) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    Fail(path.string(), ": cannot write image: ", output->geterror());
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) Fail(path.string(), ": cannot move the finished image into place");
+}
+
+}  // namespace
+
+Image8 ReadImage8(const fs::path& path, int channels) {
+  // Images are stored straight (un-associated alpha) as PNG does; without this hint OpenImageIO
+  // would premultiply on read.
+  ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = ImageInput::open(path.string(), &config);
+  if (!input) Fail(path.string(), ": cannot read image: ", OIIO::geterror());
+  const ImageSpec& spec = input->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 4)
+    Fail(path.string(), ": unsupported image (", spec.width, "x", spec.height, ", ", spec.nchannels,
+         " channels)");
+  Image8 image(spec.width, spec.height, spec.nchannels);
+  if (!input->read_image(0, 0, 0, spec.nchannels, TypeDesc::UINT8, image.pixels.data()))
+    Fail(path.string(), ": cannot decode image: ", input->geterror());
+  return ConvertChannels<uint8_t>(image, channels, 255);
+}
+
+std::pair<int, int> ReadImageSize(const fs::path& path) {
+  auto input = ImageInput::open(path.string());
+  if (!input) Fail(path.string(), ": cannot read image: ", OIIO::geterror());
+  return {input->spec().width, input->spec().height};
+}
+
+void WriteImage(const fs::path& path, const Image8& image) { WriteWithOiio(path, image, TypeDesc::UINT8); }
+void WriteImage(const fs::path& path, const ImageF& image) { WriteWithOiio(path, image, TypeDesc::FLOAT); }
+
+}  // namespace voltree

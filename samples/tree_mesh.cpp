@@ -1,0 +1,41 @@
+#include "samples/tree_mesh.h"
+
+#include <limits>
+
+#include "core/error.h"
+
+namespace voltree {
+
+size_t TreeMesh::TriangleCount() const {
+  size_t count = 0;
+  for (const MeshGroup& group : groups) count += group.indices.size() / 3;
+  return count;
+}
+
+std::pair<Eigen::Vector3f, Eigen::Vector3f> TreeMesh::Bounds() const {
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f hi = -lo;
+  for (const MeshVertex& v : vertices) {
+    lo = lo.cwiseMin(v.position);
+    hi = hi.cwiseMax(v.position);
+  }
+  return {lo, hi};
+}
+
+void TreeMesh::Check() const {
+  if (vertices.empty() || TriangleCount() == 0) Fail("the mesh has no triangles");
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const MeshGroup& group = groups[g];
+    if (group.indices.size() % 3 != 0) Fail("mesh group ", g, " has an index count not divisible by 3");
+    if (group.material < 0 || group.material >= static_cast<int>(materials.size()))
+      Fail("mesh group ", g, " refers to material ", group.material, " of ", materials.size());
+    for (uint32_t index : group.indices)
+      if (index >= vertices.size()) Fail("mesh group ", g, " refers to vertex ", index, " of ", vertices.size());
+  }
+  for (const Material& material : materials)
+    if (material.texture >= static_cast<int>(textures.size()) ||
+        (material.texture >= 0 && textures[material.texture].empty()))
+      Fail("material '", material.name, "' refers to a missing texture ", material.texture);
+}
+
+}  // namespace voltree

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs voltree's Debian 12 packages (only those missing), then configures and builds.
+# Usage: scripts/setup.sh [extra cmake args]. Environment: BUILD_DIR (default: build), JOBS.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake pkg-config git
+  colmap libopencv-dev libceres-dev libeigen3-dev libopenimageio-dev openimageio-tools
+  libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  libgtest-dev libsquish-dev libcli11-dev nlohmann-json3-dev libtbb-dev libzstd-dev
+  libtinygltf-dev libtinyobjloader-dev gnuplot-nox ffmpeg
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+fi
+
+build_dir=${BUILD_DIR:-build}
+jobs=${JOBS:-$(nproc)}
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$build_dir" -j "$jobs" 2>&1 | grep -E "error|warning|Error" || true
+test -x "$build_dir/voltree" || { echo "setup: build failed; run: cmake --build $build_dir" >&2; exit 1; }
+echo "setup: built $build_dir/voltree"
