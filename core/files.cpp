@@ -52,12 +52,15 @@ void CheckCanWrite(const fs::path& path, bool force) {
     Fail(path.string(), " already exists; pass --force to overwrite it");
 }
 
+void CheckCanReplaceFolder(const fs::path& path, bool force) {
+  if (fs::exists(path) && !fs::is_directory(path)) Fail(path.string(), " exists and is not a folder");
+  if (fs::exists(path) && !fs::is_empty(path) && !force)
+    Fail(path.string(), " exists and is not empty; pass --force to replace it");
+}
+
 StagedDirectory::StagedDirectory(fs::path final_path, bool force) : final_(std::move(final_path)) {
   if (final_.filename().empty()) final_ = final_.parent_path();  // "out/" -> "out"
-  if (fs::exists(final_) && !fs::is_directory(final_))
-    Fail(final_.string(), " exists and is not a folder");
-  if (fs::exists(final_) && !fs::is_empty(final_) && !force)
-    Fail(final_.string(), " exists and is not empty; pass --force to replace it");
+  CheckCanReplaceFolder(final_, force);
   staging_ = TemporarySibling(final_, "partial");
   std::error_code ignored;
   fs::remove_all(staging_, ignored);

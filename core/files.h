@@ -14,6 +14,10 @@ std::string ReadFile(const std::filesystem::path& path);
 // Throws Error when `path` exists and `force` is false, saying to pass --force.
 void CheckCanWrite(const std::filesystem::path& path, bool force);
 
+// Throws Error when `path` is a file, or a non-empty folder and `force` is false. Commands call it
+// before slow work so that a refusal comes at once.
+void CheckCanReplaceFolder(const std::filesystem::path& path, bool force);
+
 // An output folder built in a hidden sibling ("DIR.partial-<pid>") and renamed into place by
 // Commit(); destroyed without Commit() (an error, Ctrl-C through an exception) it removes the
 // partial folder. An existing non-empty DIR is an error unless `force`, then it is replaced

@@ -61,6 +61,29 @@ void WriteWithOiio(const fs::path& path, const Image<T>& image, TypeDesc type) {
   if (error) Fail(path.string(), ": cannot move the finished image into place");
 }
 
+// Turns stored pixels upright as the EXIF "Orientation" (1..8) says cameras meant them to be shown.
+Image8 Reorient(const Image8& in, int orientation) {
+  if (orientation < 2 || orientation > 8) return in;
+  const bool swap = orientation >= 5;
+  const int w = in.width, h = in.height;
+  Image8 out(swap ? h : w, swap ? w : h, in.channels);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      int sx = x, sy = y;
+      switch (orientation) {
+        case 2: sx = w - 1 - x; break;
+        case 3: sx = w - 1 - x; sy = h - 1 - y; break;
+        case 4: sy = h - 1 - y; break;
+        case 5: sx = y; sy = x; break;
+        case 6: sx = y; sy = h - 1 - x; break;
+        case 7: sx = w - 1 - y; sy = h - 1 - x; break;
+        case 8: sx = w - 1 - y; sy = x; break;
+      }
+      for (int c = 0; c < in.channels; ++c) out.at(x, y, c) = in.at(sx, sy, c);
+    }
+  return out;
+}
+
 }  // namespace
 
 Image8 ReadImage8(const fs::path& path, int channels) {
@@ -77,12 +100,15 @@ Image8 ReadImage8(const fs::path& path, int channels) {
   Image8 image(spec.width, spec.height, spec.nchannels);
   if (!input->read_image(0, 0, 0, spec.nchannels, TypeDesc::UINT8, image.pixels.data()))
     Fail(path.string(), ": cannot decode image: ", input->geterror());
+  image = Reorient(image, spec.get_int_attribute("Orientation", 1));
   return ConvertChannels<uint8_t>(image, channels, 255);
 }
 
 std::pair<int, int> ReadImageSize(const fs::path& path) {
   auto input = ImageInput::open(path.string());
   if (!input) Fail(path.string(), ": cannot read image: ", OIIO::geterror());
+  const bool swapped = input->spec().get_int_attribute("Orientation", 1) >= 5;  // turned by 90 degrees
+  if (swapped) return {input->spec().height, input->spec().width};
   return {input->spec().width, input->spec().height};
 }
 

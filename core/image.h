@@ -30,14 +30,15 @@ using ImageF = Image<float>;
 
 // Reads PNG, JPEG, TIFF, EXR, ... as 8-bit. `channels` > 0 converts: grey -> RGB replicates,
 // RGB -> RGBA adds opaque alpha, RGBA -> grey keeps alpha when asked for 1 channel of a matte.
-// Throws Error naming the file when it cannot be read.
+// Throws Error naming the file when it cannot be read. Pixels are turned upright as the EXIF
+// "Orientation" attribute says (camera JPEGs shot in portrait).
 Image8 ReadImage8(const std::filesystem::path& path, int channels = 0);
 // Writes through a temporary file renamed into place, so a crash never leaves half an image.
 // The format follows the extension. PNG output is deterministic (no timestamps).
 void WriteImage(const std::filesystem::path& path, const Image8& image);
 void WriteImage(const std::filesystem::path& path, const ImageF& image);  // EXR/TIFF float
 
-// Width and height of an image file without decoding it.
+// Width and height of an image file without decoding it, upright (as ReadImage8 returns it).
 std::pair<int, int> ReadImageSize(const std::filesystem::path& path);
 
 }  // namespace voltree
