@@ -27,7 +27,14 @@ struct TreeOptions {
   void Check() const;
 };
 
-// The tree in the normalized frame: +Z up, trunk base at the origin, metres.
+// The tree in the normalized frame: +Z up, trunk base at the origin, metres. Materials: "bark"
+// (opaque, tiling texture) and kLeafMaterialName (alpha mask, double sided; one quad per cluster).
 TreeMesh MakeProceduralTree(const TreeOptions& options);
+
+// The material name of leaf (or needle) quads, so counts can be reported for any mesh.
+inline constexpr std::string_view kLeafMaterialName = "leaves";
+
+// Quads (triangle pairs) drawn with the material named kLeafMaterialName.
+size_t LeafQuadCount(const TreeMesh& mesh);
 
 }  // namespace voltree

@@ -1,0 +1,65 @@
+#include "samples/studio_renderer.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace voltree {
+namespace {
+
+// Depth range that holds the whole tree: camera z of the bounds' corners, with slack.
+std::pair<double, double> DepthRange(const View& view, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  double nearest = 1e300, farthest = -1e300;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d p((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
+                            (corner & 4) ? hi.z() : lo.z());
+    const double z = view.pose.ToCamera(p).z();
+    nearest = std::min(nearest, z);
+    farthest = std::max(farthest, z);
+  }
+  farthest = std::max(farthest, 1e-3) * 1.05 + 1e-3;
+  const double near = std::max(nearest * 0.95, farthest * 1e-4);
+  return {near, farthest};
+}
+
+}  // namespace
+
+StudioRenderer::StudioRenderer(const TreeMesh& mesh, const StudioOptions& options)
+    : options_((options.Check(), options)),
+      lighting_(MakeStudioLighting(options)),
+      bounds_min_(mesh.Bounds().first.cast<double>()),
+      bounds_max_(mesh.Bounds().second.cast<double>()),
+      tree_(mesh),
+      backdrop_(options.seed, (bounds_max_ - bounds_min_).maxCoeff()) {}
+
+const Framebuffer& StudioRenderer::Target(const View& view, int supersample, std::unique_ptr<Framebuffer>& target) {
+  const int width = view.camera.width * supersample, height = view.camera.height * supersample;
+  if (!target || target->width() != width || target->height() != height)
+    target = std::make_unique<Framebuffer>(width, height, ColorFormat::kRGBA16F, true);
+  return *target;
+}
+
+ImageF StudioRenderer::RenderTree(const View& view) {
+  const Framebuffer& target = Target(view, options_.supersample, tree_target_);
+  target.Bind();
+  target.Clear(0, 0, 0, 0);
+  const auto [near, far] = DepthRange(view, bounds_min_, bounds_max_);
+  tree_.Draw(view, lighting_, near, far);
+  return downsampler_.Downsample(target, options_.supersample);
+}
+
+ImageF StudioRenderer::RenderBackdrop(const View& view) {
+  const int supersample = std::min(options_.backdrop_supersample, options_.supersample);
+  const Framebuffer& target = Target(view, supersample, backdrop_target_);
+  target.Bind();
+  backdrop_.Draw(view, lighting_, supersample);
+  return downsampler_.Downsample(target, supersample);
+}
+
+StudioLayers StudioRenderer::Photograph(const View& view) {
+  const ImageF tree = RenderTree(view);
+  const ImageF backdrop = RenderBackdrop(view);
+  return ComposeStudioLayers(tree, backdrop);
+}
+
+}  // namespace voltree

@@ -1,0 +1,214 @@
+#include "samples/studio_tree_renderer.h"
+
+#include <string>
+
+#include "core/error.h"
+#include "render/gl_context.h"
+#include "samples/studio_projection.h"
+
+namespace voltree {
+namespace {
+
+constexpr const char* kVertexMain = R"(
+invariant gl_Position;  // both passes must produce bit-identical depths for GL_EQUAL
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec3 aTint;
+out vec3 vWorld;
+out vec3 vNormal;
+out vec2 vUv;
+out vec3 vTint;
+void main() {
+  vWorld = aPosition;
+  vNormal = aNormal;
+  vUv = aUv;
+  vTint = aTint;
+  gl_Position = ProjectToClip(aPosition);
+}
+)";
+
+// Compiled twice: DEPTH_ONLY (the alpha test, writing depth) and the shading pass, which runs
+// once per visible sample thanks to the depth test before shading.
+constexpr const char* kFragment = R"(
+#if !DEPTH_ONLY
+layout(early_fragment_tests) in;
+#endif
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vUv;
+in vec3 vTint;
+out vec4 outColor;
+
+uniform vec3 uCameraCenter;
+uniform sampler2D uTexture;
+uniform int uHasTexture;
+uniform vec4 uBaseColor;     // linear RGB, alpha
+uniform float uAlphaCutoff;  // < 0: opaque
+uniform int uDoubleSided;
+uniform vec3 uSunDirection;
+uniform vec3 uSunColor;
+uniform vec3 uSkyAmbient;
+uniform vec3 uGroundAmbient;
+uniform vec3 uCrownCenter;
+uniform vec3 uCrownRadii;
+
+void main() {
+  vec4 base = uBaseColor;
+  if (uHasTexture != 0) base *= texture(uTexture, vUv);
+#if DEPTH_ONLY
+  if (base.a < uAlphaCutoff) discard;
+  outColor = vec4(0.0);
+#else
+  base.rgb *= vTint;
+
+  vec3 normal = normalize(vNormal);
+  vec3 to_camera = normalize(uCameraCenter - vWorld);
+  // Face the viewer: leaves are cards seen from both sides, and flipped bark normals are noise.
+  if (dot(normal, to_camera) < 0.0) normal = -normal;
+
+  // Self-shadowing of the crown without a shadow map: points deep inside the crown's ellipsoid
+  // and on its far side from the sun get less sun and less sky.
+  vec3 q = (vWorld - uCrownCenter) / uCrownRadii;
+  float depth = clamp(length(q), 0.0, 1.0);
+  float sunward = dot(q, uSunDirection);
+  float sun_visibility = clamp(0.5 + 0.9 * sunward + 0.5 * (depth - 0.6), 0.12, 1.0);
+  float sky_visibility = mix(0.35, 1.0, smoothstep(0.2, 1.0, depth));
+
+  float n_dot_l = dot(normal, uSunDirection);
+  float diffuse = max(n_dot_l, 0.0);
+  if (uDoubleSided != 0) diffuse += 0.35 * max(-n_dot_l, 0.0);  // light through the leaf
+  vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * normal.z) * sky_visibility;
+  vec3 color = base.rgb * (uSunColor * diffuse * sun_visibility + ambient);
+  outColor = vec4(color, 1.0);
+#endif
+}
+)";
+
+struct PackedVertex {
+  float position[3];
+  float normal[3];
+  float uv[2];
+  float tint[3];
+};
+
+float AlphaCutoff(const Material& material) {
+  switch (material.alpha_mode) {
+    case AlphaMode::kOpaque: return -1.0f;
+    case AlphaMode::kMask: return material.alpha_cutoff;
+    case AlphaMode::kBlend: return 0.5f;  // supersampling turns the cut edges into fractional alpha
+  }
+  return -1.0f;
+}
+
+}  // namespace
+
+StudioTreeRenderer::StudioTreeRenderer(const TreeMesh& mesh) : materials_(mesh.materials) {
+  mesh.Check();
+  std::vector<PackedVertex> packed(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const MeshVertex& v = mesh.vertices[i];
+    packed[i] = {{v.position.x(), v.position.y(), v.position.z()},
+                 {v.normal.x(), v.normal.y(), v.normal.z()},
+                 {v.uv.x(), v.uv.y()},
+                 {v.tint.x(), v.tint.y(), v.tint.z()}};
+  }
+  std::vector<uint32_t> indices;
+  for (const MeshGroup& group : mesh.groups) {
+    groups_.push_back({group.material, indices.size(), group.indices.size()});
+    indices.insert(indices.end(), group.indices.begin(), group.indices.end());
+  }
+  vertices_ = GlBuffer(packed.data(), packed.size() * sizeof(PackedVertex));
+  indices_ = GlBuffer(indices.data(), indices.size() * sizeof(uint32_t));
+  const GLuint vao = vertex_array_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(PackedVertex));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  const struct {
+    GLuint location;
+    GLint size;
+    GLuint offset;
+  } attributes[] = {{0, 3, offsetof(PackedVertex, position)},
+                    {1, 3, offsetof(PackedVertex, normal)},
+                    {2, 2, offsetof(PackedVertex, uv)},
+                    {3, 3, offsetof(PackedVertex, tint)}};
+  for (const auto& attribute : attributes) {
+    glEnableVertexArrayAttrib(vao, attribute.location);
+    glVertexArrayAttribFormat(vao, attribute.location, attribute.size, GL_FLOAT, GL_FALSE, attribute.offset);
+    glVertexArrayAttribBinding(vao, attribute.location, 0);
+  }
+  for (const Image8& texture : mesh.textures) textures_.emplace_back(texture, TextureOptions{});
+
+  const std::string vertex = std::string("#version 430 core\n") + kStudioProjectionGlsl + kVertexMain;
+  depth_program_ = ShaderProgram::Graphics("studio tree depth", vertex,
+                                           std::string("#version 430 core\n#define DEPTH_ONLY 1\n") + kFragment);
+  program_ = ShaderProgram::Graphics("studio tree", vertex,
+                                     std::string("#version 430 core\n#define DEPTH_ONLY 0\n") + kFragment);
+  depth_program_.Set("uTexture", 0);
+  program_.Set("uTexture", 0);
+
+  // The crown: bounds of the vertices of alpha-tested (leaf) materials, else of everything.
+  std::vector<bool> leafy(mesh.materials.size());
+  for (size_t m = 0; m < mesh.materials.size(); ++m) leafy[m] = mesh.materials[m].alpha_mode != AlphaMode::kOpaque;
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = -lo;
+  for (const MeshGroup& group : mesh.groups)
+    if (leafy[group.material])
+      for (uint32_t index : group.indices) {
+        lo = lo.cwiseMin(mesh.vertices[index].position);
+        hi = hi.cwiseMax(mesh.vertices[index].position);
+      }
+  if (!(lo.array() <= hi.array()).all()) std::tie(lo, hi) = mesh.Bounds();
+  crown_center_ = 0.5f * (lo + hi);
+  crown_radii_ = (0.5f * (hi - lo)).cwiseMax(1e-3f);
+  CheckGl("uploading the tree mesh");
+}
+
+void StudioTreeRenderer::DrawGroups(const ShaderProgram& program, bool depth_only) const {
+  program.Use();
+  for (const Group& group : groups_) {
+    const Material& material = materials_[group.material];
+    const float cutoff = AlphaCutoff(material);
+    if (depth_only && cutoff < 0) {
+      program.Set("uHasTexture", 0);  // opaque: no texture fetch needed for depth
+    } else {
+      program.Set("uHasTexture", material.texture >= 0 ? 1 : 0);
+      if (material.texture >= 0) textures_[material.texture].Bind(0);
+    }
+    const Eigen::Vector4f base(DecodeSrgb(material.base_color[0]), DecodeSrgb(material.base_color[1]),
+                               DecodeSrgb(material.base_color[2]), material.base_color[3]);
+    program.Set("uBaseColor", base);
+    program.Set("uAlphaCutoff", cutoff);
+    program.Set("uDoubleSided", material.double_sided ? 1 : 0);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(group.index_count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(group.first_index * sizeof(uint32_t)));
+  }
+}
+
+void StudioTreeRenderer::Draw(const View& view, const StudioLighting& lighting, double near, double far) const {
+  SetStudioCamera(depth_program_, view, near, far);
+  SetStudioCamera(program_, view, near, far);
+  program_.Set("uSunDirection", lighting.sun_direction);
+  program_.Set("uSunColor", lighting.sun_color);
+  program_.Set("uSkyAmbient", lighting.sky_ambient);
+  program_.Set("uGroundAmbient", lighting.ground_ambient);
+  program_.Set("uCrownCenter", crown_center_);
+  program_.Set("uCrownRadii", crown_radii_);
+  vertex_array_.Bind();
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_DEPTH_TEST);
+  // Pass 1: depth of the nearest surviving (alpha-tested) surface.
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  DrawGroups(depth_program_, true);
+  // Pass 2: shade only that surface.
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_FALSE);
+  glDepthFunc(GL_EQUAL);
+  DrawGroups(program_, false);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  CheckGl("drawing the tree");
+}
+
+}  // namespace voltree
