@@ -1,0 +1,94 @@
+#include "render/framebuffer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.h"
+#include "render/gl_context.h"
+
+namespace voltree {
+namespace {
+
+GLenum InternalFormat(ColorFormat format) {
+  switch (format) {
+    case ColorFormat::kRGBA8: return GL_RGBA8;
+    case ColorFormat::kRGBA16F: return GL_RGBA16F;
+    case ColorFormat::kRGBA32F: return GL_RGBA32F;
+  }
+  return GL_RGBA8;
+}
+
+// glReadPixels returns the bottom row first; voltree images start at the top.
+template <typename T>
+void FlipRows(Image<T>& image) {
+  const size_t row = size_t(image.width) * image.channels;
+  for (int y = 0; y < image.height / 2; ++y)
+    std::swap_ranges(image.pixels.begin() + y * row, image.pixels.begin() + (y + 1) * row,
+                     image.pixels.begin() + (image.height - 1 - y) * row);
+}
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_depth)
+    : width_(width), height_(height), format_(format) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  if (width <= 0 || height <= 0 || width > max_size || height > max_size)
+    Fail("framebuffer size ", width, "x", height, " is outside 1..", max_size, " (the driver's limit)");
+  glCreateTextures(GL_TEXTURE_2D, 1, &color_);
+  glTextureStorage2D(color_, 1, InternalFormat(format), width, height);
+  glTextureParameteri(color_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(color_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glCreateFramebuffers(1, &framebuffer_);
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
+  if (with_depth) {
+    glCreateRenderbuffers(1, &depth_);
+    glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
+    glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  }
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    Fail("OpenGL: framebuffer ", width, "x", height, " is incomplete (status 0x", std::hex, status, ")");
+  CheckGl("creating a framebuffer");
+}
+
+Framebuffer::~Framebuffer() {
+  glDeleteFramebuffers(1, &framebuffer_);
+  glDeleteTextures(1, &color_);
+  if (depth_ != 0) glDeleteRenderbuffers(1, &depth_);
+}
+
+void Framebuffer::Bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width_, height_);
+}
+
+void Framebuffer::Clear(float r, float g, float b, float a, float depth) const {
+  const float color[4] = {r, g, b, a};
+  glClearNamedFramebufferfv(framebuffer_, GL_COLOR, 0, color);
+  if (depth_ != 0) glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &depth);
+}
+
+Image8 Framebuffer::ReadImage8() const {
+  Image8 image(width_, height_, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  CheckGl("reading back a framebuffer");
+  FlipRows(image);
+  return image;
+}
+
+ImageF Framebuffer::ReadImageF() const {
+  ImageF image(width_, height_, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.pixels.data());
+  CheckGl("reading back a framebuffer");
+  FlipRows(image);
+  return image;
+}
+
+}  // namespace voltree

@@ -1,0 +1,39 @@
+// An off-screen render target: one colour texture (RGBA8 or floating point) and an optional depth
+// buffer, read back top row first like every Image in voltree.
+#pragma once
+
+#include "core/image.h"
+#include "render/gl.h"
+
+namespace voltree {
+
+enum class ColorFormat { kRGBA8, kRGBA16F, kRGBA32F };
+
+class Framebuffer {
+ public:
+  // Needs a current GL context. Throws Error when the driver rejects the size or format.
+  Framebuffer(int width, int height, ColorFormat format, bool with_depth = true);
+  ~Framebuffer();
+  Framebuffer(const Framebuffer&) = delete;
+  Framebuffer& operator=(const Framebuffer&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  ColorFormat format() const { return format_; }
+  GLuint color_texture() const { return color_; }
+
+  // Binds for drawing and sets the viewport to the whole target.
+  void Bind() const;
+  void Clear(float r, float g, float b, float a, float depth = 1.0f) const;
+
+  // RGBA, top row first. The 8-bit read clamps and rounds floating point targets.
+  Image8 ReadImage8() const;
+  ImageF ReadImageF() const;
+
+ private:
+  int width_, height_;
+  ColorFormat format_;
+  GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;
+};
+
+}  // namespace voltree

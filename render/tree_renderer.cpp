@@ -1,0 +1,321 @@
+#include "render/tree_renderer.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "render/gl.h"
+#include "render/gl_context.h"
+
+namespace voltree {
+namespace {
+
+constexpr const char* kVertexShader = R"(#version 430 core
+layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side
+layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // colour | alpha << 16
+layout(std430, binding = 2) readonly buffer Frame { uvec4 frame[]; };           // cell, A, B, 0
+uniform mat3 uWorldToCamera;
+uniform vec3 uTranslation;
+uniform vec2 uFocal;
+uniform vec2 uPrincipal;
+uniform vec4 uDistortion;  // k1 k2 p1 p2 (COLMAP OPENCV; zeros for PINHOLE)
+uniform vec2 uImageSize;
+uniform vec2 uDepthRange;
+uniform vec3 uCameraRight, uCameraUp;  // world directions of image +X and -Y
+uniform vec3 uRight[2], uUp[2];        // the two input views' billboard axes
+uniform float uScale;
+out vec3 vWorld;
+flat out vec4 vCell;
+flat out uvec3 vTiles;  // tiles of A, tiles of B, presence mask
+
+vec2 Distort(vec2 n) {
+  float r2 = dot(n, n);
+  float radial = 1.0 + uDistortion.x * r2 + uDistortion.y * r2 * r2;
+  float uv = n.x * n.y;
+  return vec2(n.x * radial + 2.0 * uDistortion.z * uv + uDistortion.w * (r2 + 2.0 * n.x * n.x),
+              n.y * radial + 2.0 * uDistortion.w * uv + uDistortion.z * (r2 + 2.0 * n.y * n.y));
+}
+
+// Same projection as the studio: window coordinates are COLMAP pixel coordinates.
+vec4 ProjectToClip(vec3 world) {
+  vec3 c = uWorldToCamera * world + uTranslation;
+  float z = c.z;
+  vec2 pixel = uFocal * Distort(c.xy / max(z, 1e-6)) + uPrincipal;
+  vec2 ndc = vec2(2.0 * pixel.x / uImageSize.x - 1.0, 1.0 - 2.0 * pixel.y / uImageSize.y);
+  float n = uDepthRange.x, f = uDepthRange.y;
+  return vec4(ndc * z, ((f + n) * z - 2.0 * f * n) / (f - n), z);
+}
+
+void main() {
+  uvec4 record = frame[gl_InstanceID];
+  vec4 cell = cells[record.x];
+  float side = uScale * cell.w;
+  // Half extents on the camera axes that hold both input views' squares (5% for perspective).
+  vec2 half_extent = vec2(0.0);
+  for (int k = 0; k < 2; ++k) {
+    half_extent = max(half_extent, vec2(abs(dot(uRight[k], uCameraRight)) + abs(dot(uUp[k], uCameraRight)),
+                                        abs(dot(uRight[k], uCameraUp)) + abs(dot(uUp[k], uCameraUp))));
+  }
+  half_extent *= 0.5 * side * 1.05;
+  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
+  vWorld = cell.xyz + corner.x * half_extent.x * uCameraRight + corner.y * half_extent.y * uCameraUp;
+  vCell = vec4(cell.xyz, side);
+  uint mask = (record.y != 0xffffffffu ? 1u : 0u) | (record.z != 0xffffffffu ? 2u : 0u);
+  vTiles = uvec3((mask & 1u) != 0u ? billboards[record.y] : 0u, (mask & 2u) != 0u ? billboards[record.z] : 0u, mask);
+  gl_Position = ProjectToClip(vWorld);
+}
+)";
+
+constexpr const char* kFragmentShader = R"(#version 430 core
+uniform sampler2D uAtlas;
+uniform vec3 uEye;
+uniform vec3 uDirection[2], uRight[2], uUp[2];  // the two input views' billboard frames
+uniform float uWeight[2];
+uniform int uTexels, uPitch, uTilesPerRow;
+uniform vec2 uAtlasSize;
+in vec3 vWorld;
+flat in vec4 vCell;
+flat in uvec3 vTiles;
+out vec4 color;
+
+vec2 TileTexel(uint tile, vec2 texel) {
+  vec2 origin = vec2(float(int(tile) % uTilesPerRow), float(int(tile) / uTilesPerRow)) * float(uPitch);
+  // Clamped half a texel inside the n x n tile: bilinear filtering never reads a neighbour.
+  return (origin + clamp(texel, vec2(0.5), vec2(float(uTexels) - 0.5))) / uAtlasSize;
+}
+
+// Premultiplied RGBA of input view k's billboard where the pixel's ray meets its plane.
+vec4 Fetch(int k, uint tiles) {
+  vec3 ray = vWorld - uEye;
+  float denominator = dot(ray, uDirection[k]);
+  if (abs(denominator) < 1e-12) return vec4(0.0);
+  vec3 local = uEye + ray * (dot(vCell.xyz - uEye, uDirection[k]) / denominator) - vCell.xyz;
+  vec2 st = vec2(dot(local, uRight[k]), -dot(local, uUp[k])) / vCell.w + 0.5;  // texel (0,0) top-left
+  if (any(lessThan(st, vec2(0.0))) || any(greaterThan(st, vec2(1.0)))) return vec4(0.0);
+  vec2 texel = st * float(uTexels);
+  vec3 rgb = texture(uAtlas, TileTexel(tiles & 0xffffu, texel)).rgb;
+  float a = texture(uAtlas, TileTexel(tiles >> 16, texel)).a;
+  return vec4(rgb * a, a);
+}
+
+void main() {
+  vec4 sum = vec4(0.0);
+  if ((vTiles.z & 1u) != 0u) sum += uWeight[0] * Fetch(0, vTiles.x);
+  if ((vTiles.z & 2u) != 0u) sum += uWeight[1] * Fetch(1, vTiles.y);
+  if (sum.a <= 0.0) discard;
+  color = sum;
+}
+)";
+
+using Clock = std::chrono::steady_clock;
+double Ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+unsigned MakeStorage(const void* data, size_t bytes) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  glNamedBufferStorage(id, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (bytes > 0) glNamedBufferSubData(id, 0, GLsizeiptr(bytes), data);
+  CheckGl("render: uploading a storage buffer");
+  return id;
+}
+
+// The billboard frame of an input view as the reconstruction built it: right = dir x up.
+struct BillboardFrame {
+  Eigen::Vector3f direction, right, up;
+};
+BillboardFrame FrameOf(const VtreeView& view) {
+  const Eigen::Vector3d d = view.direction.normalized();
+  const Eigen::Vector3d up = view.up.normalized();
+  return {d.cast<float>(), d.cross(up).normalized().cast<float>(), up.cast<float>()};
+}
+
+void SetVec3Array(const ShaderProgram& program, const char* name, const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  const float values[6] = {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()};
+  glProgramUniform3fv(program.id(), program.Location(name), 2, values);
+}
+
+}  // namespace
+
+void TreeRenderOptions::Check() const {
+  lod.Check();
+  for (float c : background)
+    if (!(c >= 0 && c <= 1)) Fail("render: background components must be in [0, 1]");
+  if (!(billboard_scale > 0)) Fail("render: billboard scale must be > 0, got ", billboard_scale);
+}
+
+TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texels_(asset.texels), index_(asset) {
+  if (asset.levels.empty()) Fail("render: the asset has no levels");
+  if (views_.empty()) Fail("render: the asset has no input views");
+  radius_ = 0.5 * std::sqrt(3.0) * asset.size;  // the root cube's, so every cell is inside
+  centre_ = asset.origin + Eigen::Vector3d::Constant(0.5 * asset.size);
+  program_ = ShaderProgram::Graphics("vtree billboards", kVertexShader, kFragmentShader);
+
+  std::vector<float> cells(size_t(index_.CellCount()) * 4);
+  for (uint32_t c = 0; c < index_.CellCount(); ++c) {
+    const Eigen::Vector3d& p = index_.Centre(c);
+    cells[4 * c] = float(p.x()), cells[4 * c + 1] = float(p.y()), cells[4 * c + 2] = float(p.z());
+    cells[4 * c + 3] = float(index_.CellSize(index_.LevelOf(c)));
+  }
+  std::vector<uint32_t> billboards(index_.BillboardCount());
+  for (uint32_t b = 0; b < index_.BillboardCount(); ++b) {
+    const VtreeBillboard& record = index_.Billboard(b);
+    if (record.colour >= asset.atlas.tile_count || record.alpha >= asset.atlas.tile_count)
+      Fail("render: billboard ", b, " names a tile beyond the atlas's ", asset.atlas.tile_count);
+    billboards[b] = uint32_t(record.colour) | (uint32_t(record.alpha) << 16);
+  }
+  cells_buffer_ = MakeStorage(cells.data(), cells.size() * sizeof(float));
+  billboards_buffer_ = MakeStorage(billboards.data(), billboards.size() * sizeof(uint32_t));
+
+  const VtreeAtlas& atlas = asset.atlas;
+  if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
+      atlas.dxt5.size() != size_t(atlas.width) * atlas.height)
+    Fail("render: bad atlas ", atlas.width, "x", atlas.height, " with ", atlas.dxt5.size(), " bytes");
+  glCreateTextures(GL_TEXTURE_2D, 1, &atlas_);
+  glTextureStorage2D(atlas_, 1, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GLsizei(atlas.width), GLsizei(atlas.height));
+  glCompressedTextureSubImage2D(atlas_, 0, 0, 0, GLsizei(atlas.width), GLsizei(atlas.height),
+                                GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GLsizei(atlas.dxt5.size()), atlas.dxt5.data());
+  glTextureParameteri(atlas_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(atlas_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(atlas_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(atlas_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  CheckGl("render: uploading the DXT5 atlas (needs GL_EXT_texture_compression_s3tc)");
+  glCreateVertexArrays(1, &vertex_array_);
+
+  program_.Set("uAtlas", 0);
+  program_.Set("uTexels", asset.texels);
+  program_.Set("uPitch", int(atlas.tile_pitch));
+  program_.Set("uTilesPerRow", int(atlas.tiles_per_row));
+  program_.Set("uAtlasSize", Eigen::Vector2f(float(atlas.width), float(atlas.height)));
+}
+
+TreeRenderer::~TreeRenderer() {
+  const GLuint buffers[] = {cells_buffer_, billboards_buffer_, frame_buffer_};
+  glDeleteBuffers(3, buffers);
+  if (atlas_) glDeleteTextures(1, &atlas_);
+  if (vertex_array_) glDeleteVertexArrays(1, &vertex_array_);
+}
+
+FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options,
+                              std::vector<std::array<uint32_t, 4>>* records, std::vector<uint8_t>* lod_state) const {
+  FrameStats stats;
+  const Eigen::Vector3d eye = camera.pose.Center();
+  stats.views = SelectViews(views_, centre_, eye);
+  TraversalCamera traversal_camera{eye, 0.5 * (camera.camera.FocalX() + camera.camera.FocalY())};
+  std::vector<uint32_t> cells;
+  TraverseBackToFront(index_, traversal_camera, options.lod, texels_, &cells, lod_state);
+  records->clear();
+  const bool two = stats.views.second != stats.views.first && stats.views.second_weight > 0;
+  for (uint32_t cell : cells) {
+    const uint32_t a = index_.FindBillboard(cell, uint16_t(stats.views.first));
+    const uint32_t b = two ? index_.FindBillboard(cell, uint16_t(stats.views.second)) : OctreeIndex::kNone;
+    if (a == OctreeIndex::kNone && b == OctreeIndex::kNone) continue;  // pruned in both views
+    records->push_back({cell, a, b, 0});
+    stats.billboards += (a != OctreeIndex::kNone) + (b != OctreeIndex::kNone);
+    const int level = index_.LevelOf(cell);
+    stats.min_level = stats.min_level < 0 ? level : std::min(stats.min_level, level);
+    stats.max_level = std::max(stats.max_level, level);
+  }
+  stats.cells = records->size();
+  return stats;
+}
+
+FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& options) {
+  options.Check();
+  camera.camera.Check();
+  const auto start = Clock::now();
+  std::vector<std::array<uint32_t, 4>> records;
+  FrameStats stats = Plan(camera, options, &records, options.lod_history ? &lod_state_ : nullptr);
+  stats.traversal_ms = Ms(start, Clock::now());
+
+  const size_t bytes = std::max<size_t>(records.size() * sizeof(records[0]), 16);
+  if (bytes > frame_buffer_bytes_) {  // grows only; reused between frames
+    if (frame_buffer_) glDeleteBuffers(1, &frame_buffer_);
+    frame_buffer_bytes_ = std::max(bytes, 2 * frame_buffer_bytes_);
+    glCreateBuffers(1, &frame_buffer_);
+    glNamedBufferData(frame_buffer_, GLsizeiptr(frame_buffer_bytes_), nullptr, GL_STREAM_DRAW);
+  }
+  if (!records.empty()) glNamedBufferSubData(frame_buffer_, 0, GLsizeiptr(records.size() * sizeof(records[0])), records.data());
+
+  // Camera uniforms (the studio's projection; distortion per vertex).
+  const Camera& intrinsics = camera.camera;
+  Eigen::Vector4f distortion = Eigen::Vector4f::Zero();
+  const std::vector<double>& p = intrinsics.params;
+  switch (intrinsics.model) {
+    case CameraModel::kSimplePinhole:
+    case CameraModel::kPinhole: break;
+    case CameraModel::kSimpleRadial: distortion[0] = float(p[3]); break;
+    case CameraModel::kRadial: distortion << float(p[3]), float(p[4]), 0, 0; break;
+    case CameraModel::kOpenCV: distortion << float(p[4]), float(p[5]), float(p[6]), float(p[7]); break;
+  }
+  const Eigen::Vector3d eye = camera.pose.Center();
+  const double distance = (eye - centre_).norm();
+  const double near = std::max(distance - radius_, 1e-4 * radius_), far = distance + radius_ * 1.01 + near;
+  const Eigen::Matrix3d rotation = camera.pose.rotation.toRotationMatrix();
+  program_.Set("uWorldToCamera", Eigen::Matrix3f(rotation.cast<float>()));
+  program_.Set("uTranslation", Eigen::Vector3f(camera.pose.translation.cast<float>()));
+  program_.Set("uFocal", Eigen::Vector2f(float(intrinsics.FocalX()), float(intrinsics.FocalY())));
+  program_.Set("uPrincipal", Eigen::Vector2f(intrinsics.PrincipalPoint().cast<float>()));
+  program_.Set("uDistortion", distortion);
+  program_.Set("uImageSize", Eigen::Vector2f(float(intrinsics.width), float(intrinsics.height)));
+  program_.Set("uDepthRange", Eigen::Vector2f(float(near), float(far)));
+  program_.Set("uCameraRight", Eigen::Vector3f(rotation.row(0).transpose().cast<float>()));
+  program_.Set("uCameraUp", Eigen::Vector3f((-rotation.row(1)).transpose().cast<float>()));
+  program_.Set("uEye", Eigen::Vector3f(eye.cast<float>()));
+  program_.Set("uScale", float(options.billboard_scale));
+  const BillboardFrame a = FrameOf(views_[stats.views.first]), b = FrameOf(views_[stats.views.second]);
+  SetVec3Array(program_, "uDirection", a.direction, b.direction);
+  SetVec3Array(program_, "uRight", a.right, b.right);
+  SetVec3Array(program_, "uUp", a.up, b.up);
+  const float weights[2] = {stats.views.first_weight, stats.views.second_weight};
+  glProgramUniform1fv(program_.id(), program_.Location("uWeight"), 2, weights);
+
+  if (!records.empty()) {
+    program_.Use();
+    glBindVertexArray(vertex_array_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_buffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, billboards_buffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, frame_buffer_);
+    glBindTextureUnit(0, atlas_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(records.size()));  // one draw per tree
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(0);
+  }
+  glFinish();
+  CheckGl("render: drawing the tree");
+  stats.frame_ms = Ms(start, Clock::now());
+  return stats;
+}
+
+Image8 TreeRenderer::Render(const View& camera, const TreeRenderOptions& options, FrameStats* stats) {
+  camera.camera.Check();
+  if (!target_ || target_->width() != camera.camera.width || target_->height() != camera.camera.height)
+    target_ = std::make_unique<Framebuffer>(camera.camera.width, camera.camera.height, ColorFormat::kRGBA8);
+  target_->Bind();
+  const auto& bg = options.background;
+  target_->Clear(bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]);  // premultiplied, like the blend
+  const FrameStats frame = Draw(camera, options);
+  if (stats) *stats = frame;
+  return Unpremultiply(target_->ReadImage8());
+}
+
+Image8 Unpremultiply(const Image8& premultiplied) {
+  if (premultiplied.channels != 4) Fail("unpremultiply: expected RGBA, got ", premultiplied.channels, " channels");
+  Image8 out = premultiplied;
+  for (size_t i = 0; i < out.pixels.size(); i += 4) {
+    const int a = out.pixels[i + 3];
+    for (int c = 0; c < 3; ++c)
+      out.pixels[i + c] = a == 0 ? 0 : uint8_t(std::min(255, (int(out.pixels[i + c]) * 255 + a / 2) / a));
+  }
+  return out;
+}
+
+}  // namespace voltree

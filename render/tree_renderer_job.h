@@ -1,0 +1,44 @@
+// `voltree render`: frames of a .vtree asset from an orbit or from a COLMAP camera model,
+// written as straight-alpha RGBA PNGs into a staged output folder, with timing statistics.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/progress.h"
+#include "render/tree_renderer.h"
+
+namespace voltree {
+
+struct RenderJobOptions {
+  std::filesystem::path asset;
+  int orbit = 0;                     // > 0: that many orbit frames
+  std::filesystem::path cameras;     // else: a COLMAP text model; frames named after its images
+  int width = 0, height = 0;         // 0: from the cameras (orbit: 512x512)
+  TreeRenderOptions render;
+  std::filesystem::path output;
+  bool force = false;
+  void Check() const;
+};
+
+struct RenderJobResult {
+  std::vector<std::string> frames;         // file names inside the output folder
+  std::vector<FrameStats> stats;           // per frame
+  double median_ms = 0;                    // of FrameStats::frame_ms
+  double mean_billboards = 0;
+  std::string renderer;                    // GL_RENDERER
+};
+
+// "640x480" -> {640, 480}; throws Error naming `what` otherwise.
+std::array<int, 2> ParseSize(const std::string& text, const std::string& what);
+// "R,G,B" with components 0..255 -> opaque straight RGBA in [0, 1].
+std::array<float, 4> ParseBackground(const std::string& text);
+// A camera's intrinsics scaled to a new image size (focal lengths and principal point).
+Camera ResizeCamera(const Camera& camera, int width, int height);
+
+RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress);
+
+}  // namespace voltree

@@ -1,0 +1,142 @@
+#include "render/tree_renderer_job.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <numbers>
+#include <unistd.h>
+
+#include "core/colmap_model.h"
+#include "core/error.h"
+#include "core/files.h"
+#include "core/image.h"
+#include "core/vtree.h"
+
+namespace voltree {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A two-level asset with uniform opaque white tiles, four views around the tree.
+VtreeAsset SmallAsset() {
+  VtreeAsset asset;
+  asset.origin = Eigen::Vector3d(-1, -1, 0);
+  asset.size = 2;
+  asset.texels = 4;
+  asset.bounds_min = asset.origin;
+  asset.bounds_max = Eigen::Vector3d(1, 1, 2);
+  for (int v = 0; v < 4; ++v) {
+    const double a = 2 * std::numbers::pi * v / 4;
+    const Eigen::Vector3d eye(5 * std::cos(a), 5 * std::sin(a), 1.5);
+    const Pose pose = Pose::LookAt(eye, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ());
+    const Eigen::Matrix3d r = pose.rotation.toRotationMatrix();
+    asset.views.push_back({"view_" + std::to_string(v) + ".png", eye, r.row(2).transpose(), -r.row(1).transpose()});
+  }
+  asset.levels.resize(2);
+  asset.levels[0].resolution = 1;
+  asset.levels[0].cells = {{0, 0, 0}};
+  asset.levels[1].resolution = 2;
+  asset.levels[1].cells = {{0, 0, 0}, {1, 1, 1}};
+  for (auto& level : asset.levels) {
+    level.density.assign(level.cells.size(), 1.0f);
+    for (uint32_t c = 0; c < level.cells.size(); ++c)
+      for (uint16_t v = 0; v < 4; ++v) level.billboards.push_back({c, v, 0, 0});
+    level.billboards_before_pruning = level.billboards.size();
+  }
+  asset.colour_codebook_size = asset.alpha_codebook_size = 1;
+  asset.atlas.width = asset.atlas.height = 4;
+  asset.atlas.tiles_per_row = 1;
+  asset.atlas.tile_count = 1;
+  asset.atlas.dxt5 = {255, 255, 0, 0, 0, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0, 0, 0, 0};  // opaque white
+  return asset;
+}
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("voltree_render_job_" + std::to_string(::getpid()));
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+TEST(RenderJob, ParsesSizesAndBackgrounds) {
+  EXPECT_EQ(ParseSize("640x480", "--size"), (std::array<int, 2>{640, 480}));
+  EXPECT_THROW(ParseSize("640", "--size"), Error);
+  EXPECT_THROW(ParseSize("0x4", "--size"), Error);
+  EXPECT_THROW(ParseSize("64x48x2", "--size"), Error);
+  const auto bg = ParseBackground("255,0,51");
+  EXPECT_FLOAT_EQ(bg[0], 1.0f);
+  EXPECT_FLOAT_EQ(bg[2], 0.2f);
+  EXPECT_FLOAT_EQ(bg[3], 1.0f);
+  EXPECT_THROW(ParseBackground("300,0,0"), Error);
+}
+
+TEST(RenderJob, ResizesCameras) {
+  const Camera camera = Camera::Pinhole(200, 100, 150, 160, 100, 50);
+  const Camera half = ResizeCamera(camera, 100, 50);
+  EXPECT_DOUBLE_EQ(half.FocalX(), 75);
+  EXPECT_DOUBLE_EQ(half.FocalY(), 80);
+  EXPECT_DOUBLE_EQ(half.PrincipalPoint().x(), 50);
+  Camera simple;
+  simple.model = CameraModel::kSimplePinhole;
+  simple.width = 200, simple.height = 100;
+  simple.params = {150, 100, 50};
+  EXPECT_THROW(ResizeCamera(simple, 100, 100), Error);  // aspect change with one focal length
+}
+
+TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
+  TempDir temp;
+  WriteAsset(temp.path / "tree.vtree", SmallAsset());
+  RenderJobOptions options;
+  options.asset = temp.path / "tree.vtree";
+  options.orbit = 3;
+  options.width = 64, options.height = 48;
+  options.output = temp.path / "frames";
+  const RenderJobResult result = RunRenderJob(options, nullptr);
+  ASSERT_EQ(result.frames.size(), 3u);
+  EXPECT_EQ(result.frames[0], "frame_000.png");
+  const Image8 first = ReadImage8(options.output / "frame_000.png");
+  EXPECT_EQ(first.width, 64);
+  EXPECT_EQ(first.channels, 4);
+  int opaque = 0;
+  for (size_t i = 3; i < first.pixels.size(); i += 4) opaque += first.pixels[i] == 255;
+  EXPECT_GT(opaque, 50);                              // the tree is in the picture...
+  EXPECT_EQ(first.at(0, 0, 3), 0);                    // ...on a transparent background
+  EXPECT_TRUE(fs::exists(options.output / "frames.json"));
+  EXPECT_THROW(RunRenderJob(options, nullptr), Error);  // exists, no force
+  const std::string bytes = ReadFile(options.output / "frame_001.png");
+  const std::string json = ReadFile(options.output / "frames.json");
+  options.force = true;
+  RunRenderJob(options, nullptr);
+  EXPECT_EQ(ReadFile(options.output / "frame_001.png"), bytes);  // deterministic, byte for byte
+  EXPECT_EQ(ReadFile(options.output / "frames.json"), json);
+}
+
+TEST(RenderJob, CamerasFromAColmapModelNameTheFrames) {
+  TempDir temp;
+  WriteAsset(temp.path / "tree.vtree", SmallAsset());
+  ColmapModel model;
+  model.cameras[1] = Camera::Pinhole(40, 30, 40, 40, 20, 15);
+  ColmapImage image;
+  image.image_id = 1;
+  image.camera_id = 1;
+  image.name = "held_007.jpg";
+  image.pose = Pose::LookAt(Eigen::Vector3d(4, 1, 1.5), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ());
+  model.images[1] = image;
+  fs::create_directories(temp.path / "sparse");
+  WriteColmapText(temp.path / "sparse", model);
+  RenderJobOptions options;
+  options.asset = temp.path / "tree.vtree";
+  options.cameras = temp.path / "sparse";
+  options.render.background = {0, 0, 1, 1};
+  options.output = temp.path / "held";
+  const RenderJobResult result = RunRenderJob(options, nullptr);
+  ASSERT_EQ(result.frames.size(), 1u);
+  const Image8 frame = ReadImage8(options.output / "held_007.png");
+  EXPECT_EQ(frame.width, 40);
+  EXPECT_EQ(frame.at(0, 0, 2), 255);  // opaque blue background
+  EXPECT_EQ(frame.at(0, 0, 3), 255);
+  options.orbit = 2;
+  EXPECT_THROW(options.Check(), Error);  // both sources
+}
+
+}  // namespace
+}  // namespace voltree

@@ -1,0 +1,179 @@
+#include "render/tree_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+
+#include "render/gl_context.h"
+
+namespace voltree {
+namespace {
+
+// One DXT5 block: uniform white colour; alpha 255 in texel rows [0, opaque_rows), 0 below.
+std::array<uint8_t, 16> Dxt5Block(int opaque_rows) {
+  std::array<uint8_t, 16> block{};
+  block[0] = 255;  // alpha0
+  block[1] = 0;    // alpha1
+  uint64_t indices = 0;
+  for (int texel = opaque_rows * 4; texel < 16; ++texel) indices |= uint64_t(1) << (3 * texel);  // -> alpha1
+  for (int i = 0; i < 6; ++i) block[2 + i] = uint8_t(indices >> (8 * i));
+  block[8] = block[9] = block[10] = block[11] = 0xff;  // colour0 = colour1 = white (RGB565)
+  return block;                                          // colour indices 0
+}
+
+View MakeCamera(const Eigen::Vector3d& eye, int size) {
+  View view;
+  view.camera = Camera::Pinhole(size, size, 1.2 * size, 1.2 * size, 0.5 * size, 0.5 * size);
+  view.pose = Pose::LookAt(eye, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ());
+  return view;
+}
+
+// Root cube [-1,1]^2 x [0,2], 3 levels, a sparse set of finest cells; every cell has a billboard
+// for every view with a white colour tile (0) and an alpha tile (1) opaque in its top half only,
+// so the test sees the billboards' orientation, not just their footprint.
+struct Scene {
+  VtreeAsset asset;
+  std::vector<View> cameras;
+};
+Scene MakeScene(int size) {
+  Scene scene;
+  VtreeAsset& asset = scene.asset;
+  asset.origin = Eigen::Vector3d(-1, -1, 0);
+  asset.size = 2;
+  asset.texels = 4;
+  asset.bounds_min = asset.origin;
+  asset.bounds_max = asset.origin + Eigen::Vector3d::Constant(2);
+  for (int v = 0; v < 8; ++v) {
+    const double azimuth = 2 * std::numbers::pi * v / 8;
+    const Eigen::Vector3d eye(5 * std::cos(azimuth), 5 * std::sin(azimuth), 2.5);
+    View camera = MakeCamera(eye, size);
+    camera.name = "view_" + std::to_string(v) + ".png";
+    const Eigen::Matrix3d r = camera.pose.rotation.toRotationMatrix();
+    asset.views.push_back({camera.name, eye, r.row(2).transpose(), -r.row(1).transpose()});
+    scene.cameras.push_back(camera);
+  }
+  const std::vector<std::array<uint16_t, 3>> finest = {{0, 0, 0}, {1, 2, 1}, {2, 1, 3}, {3, 3, 2}, {1, 1, 2}, {2, 2, 0}};
+  asset.levels.resize(3);
+  for (int l = 0; l < 3; ++l) {
+    asset.levels[l].resolution = 1u << l;
+    for (const auto& c : finest) {
+      const std::array<uint16_t, 3> cell = {uint16_t(c[0] >> (2 - l)), uint16_t(c[1] >> (2 - l)), uint16_t(c[2] >> (2 - l))};
+      if (std::find(asset.levels[l].cells.begin(), asset.levels[l].cells.end(), cell) == asset.levels[l].cells.end())
+        asset.levels[l].cells.push_back(cell);
+    }
+    asset.levels[l].density.assign(asset.levels[l].cells.size(), 1.0f);
+    for (uint32_t c = 0; c < asset.levels[l].cells.size(); ++c)
+      for (uint16_t v = 0; v < 8; ++v) asset.levels[l].billboards.push_back({c, v, 0, 1});
+  }
+  asset.atlas.width = 8;
+  asset.atlas.height = 4;
+  asset.atlas.tile_pitch = 4;
+  asset.atlas.tiles_per_row = 2;
+  asset.atlas.tile_count = 2;
+  for (int opaque_rows : {4, 2}) {
+    const auto block = Dxt5Block(opaque_rows);
+    asset.atlas.dxt5.insert(asset.atlas.dxt5.end(), block.begin(), block.end());
+  }
+  return scene;
+}
+
+// Where the top half of any level-`level` billboard of view `v` covers a pixel centre (CPU ray casting).
+Image8 ExpectedCoverage(const VtreeAsset& asset, int level, int v, const View& camera) {
+  const int w = camera.camera.width, h = camera.camera.height;
+  Image8 coverage(w, h, 1);
+  const VtreeView& view = asset.views[v];
+  const Eigen::Vector3d right = view.direction.cross(view.up);
+  const double side = asset.size / asset.levels[level].resolution;
+  const Eigen::Vector3d eye = camera.pose.Center();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Eigen::Vector3d ray = camera.PixelRay(Eigen::Vector2d(x + 0.5, y + 0.5));
+      for (const auto& c : asset.levels[level].cells) {
+        const Eigen::Vector3d centre = asset.origin + side * (Eigen::Vector3d(c[0], c[1], c[2]).array() + 0.5).matrix();
+        const double t = (centre - eye).dot(view.direction) / ray.dot(view.direction);
+        const Eigen::Vector3d local = eye + t * ray - centre;
+        const double s = local.dot(right) / side + 0.5, r = 0.5 - local.dot(view.up) / side;
+        if (s >= 0 && s <= 1 && r >= 0 && r <= 0.5) coverage.at(x, y) = 255;
+      }
+    }
+  return coverage;
+}
+
+TEST(TreeRenderer, InputViewReproducesBillboardAlphaAndOrientation) {
+  GlContext context;
+  constexpr int kSize = 96;
+  const Scene scene = MakeScene(kSize);
+  TreeRenderer renderer(scene.asset);
+  for (int v : {0, 3}) {
+    TreeRenderOptions options;
+    options.lod.forced_level = 2;
+    FrameStats stats;
+    const Image8 image = renderer.Render(scene.cameras[v], options, &stats);
+    EXPECT_EQ(stats.views.first, v);
+    EXPECT_FLOAT_EQ(stats.views.first_weight, 1.0f);
+    EXPECT_EQ(stats.min_level, 2);
+    EXPECT_EQ(stats.max_level, 2);
+    EXPECT_EQ(stats.cells, scene.asset.levels[2].cells.size());
+    const Image8 expected = ExpectedCoverage(scene.asset, 2, v, scene.cameras[v]);
+    int covered = 0, mismatched = 0, not_white = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const bool drawn = image.at(x, y, 3) >= 128;
+        covered += expected.at(x, y) != 0;
+        mismatched += drawn != (expected.at(x, y) != 0);
+        if (drawn && image.at(x, y, 0) < 250) ++not_white;
+      }
+    // Measured (llvmpipe): 0 mismatched of 361 / 370 covered pixels for views 0 / 3; with the
+    // expected half flipped (billboards upside down) 711 / 717 mismatch. Bound: 2% of covered.
+    EXPECT_GT(covered, 300) << "view " << v;
+    EXPECT_LE(mismatched, covered / 50) << "view " << v << ": " << mismatched << " of " << covered;
+    EXPECT_EQ(not_white, 0);
+  }
+}
+
+TEST(TreeRenderer, TransparentWhereNothingIsAndBackgroundIsComposited) {
+  GlContext context;
+  const Scene scene = MakeScene(48);
+  TreeRenderer renderer(scene.asset);
+  View away = scene.cameras[0];
+  away.pose = Pose::LookAt(Eigen::Vector3d(5, 0, 2.5), Eigen::Vector3d(10, 0, 2.5), Eigen::Vector3d::UnitZ());
+  TreeRenderOptions options;
+  FrameStats stats;
+  const Image8 empty = renderer.Render(away, options, &stats);
+  for (size_t i = 3; i < empty.pixels.size(); i += 4) ASSERT_EQ(empty.pixels[i], 0);
+  options.background = {0, 0, 1, 1};
+  const Image8 blue = renderer.Render(scene.cameras[1], options, &stats);
+  EXPECT_EQ(blue.at(0, 0, 2), 255);
+  EXPECT_EQ(blue.at(0, 0, 3), 255);
+  EXPECT_GT(stats.billboards, 0u);
+}
+
+TEST(TreeRenderer, BetweenTwoViewsBlendsBoth) {
+  GlContext context;
+  const Scene scene = MakeScene(48);
+  TreeRenderer renderer(scene.asset);
+  // Half-way between views 0 and 1 in azimuth: both weigh about one half.
+  const double azimuth = std::numbers::pi / 8;
+  const View camera = MakeCamera(Eigen::Vector3d(5 * std::cos(azimuth), 5 * std::sin(azimuth), 2.5), 48);
+  std::vector<std::array<uint32_t, 4>> records;
+  const FrameStats stats = renderer.Plan(camera, {}, &records);
+  EXPECT_NEAR(stats.views.first_weight, 0.5, 0.01);
+  EXPECT_TRUE((stats.views.first == 0 && stats.views.second == 1) || (stats.views.first == 1 && stats.views.second == 0));
+  EXPECT_EQ(stats.billboards, 2 * stats.cells);
+}
+
+TEST(TreeRenderer, UnpremultiplyRounds) {
+  Image8 image(2, 1, 4);
+  image.pixels = {64, 32, 0, 128, 10, 10, 10, 0};
+  const Image8 straight = Unpremultiply(image);
+  EXPECT_EQ(straight.at(0, 0, 0), 128);
+  EXPECT_EQ(straight.at(0, 0, 1), 64);
+  EXPECT_EQ(straight.at(0, 0, 3), 128);
+  EXPECT_EQ(straight.at(1, 0, 0), 0);
+}
+
+}  // namespace
+}  // namespace voltree
