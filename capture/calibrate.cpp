@@ -1,0 +1,235 @@
+#include "capture/calibrate.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "capture/calibrate_colmap.h"
+#include "capture/colmap_binary.h"
+#include "capture/normalize.h"
+#include "core/error.h"
+#include "core/files.h"
+#include "core/image.h"
+
+namespace voltree {
+namespace fs = std::filesystem;
+
+FeatureMask FeatureMaskFromName(const std::string& name) {
+  if (name == "all") return FeatureMask::kAll;
+  if (name == "tree") return FeatureMask::kTree;
+  if (name == "near") return FeatureMask::kNear;
+  Fail("unknown feature mask '", name, "' (expected all, tree or near)");
+}
+
+void CalibrateOptions::Check() const {
+  const CameraModel model = CameraModelFromName(camera_model);
+  if (!camera_params.empty() && int(camera_params.size()) != CameraModelParamCount(model))
+    Fail("--camera-params: ", camera_model, " needs ", CameraModelParamCount(model), " values, got ",
+         camera_params.size());
+  if (max_image_size < 64) Fail("--max-image-size must be at least 64, got ", max_image_size);
+  if (max_features < 64) Fail("--max-features must be at least 64, got ", max_features);
+  if (matcher != "exhaustive" && matcher != "sequential")
+    Fail("--matcher must be exhaustive or sequential, got '", matcher, "'");
+  if (!(min_registered >= 0 && min_registered <= 1)) Fail("--min-registered must be in [0, 1], got ", min_registered);
+  if (!(near_band > 0 && near_band < 1)) Fail("near band must be in (0, 1), got ", near_band);
+  if (up && !(up->norm() > 0 && up->allFinite())) Fail("--up must be a non-zero direction");
+  if (height_metres && !(*height_metres > 0)) Fail("--height must be positive, got ", *height_metres);
+  if (!import_model.empty() && !known_cameras.empty()) Fail("--import and --known-cameras exclude each other");
+  hull.Check();
+}
+
+std::vector<std::string> ListImages(const fs::path& folder) {
+  if (!fs::is_directory(folder)) Fail(folder.string(), ": no such folder (expected the photos in DIR/images/)");
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (!entry.is_regular_file()) continue;
+    std::string extension = entry.path().extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    for (const char* known : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp"})
+      if (extension == known) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+double MeanReprojectionError(const ColmapModel& model) {
+  double total = 0;
+  size_t count = 0;
+  for (const auto& [id, point] : model.points)
+    for (const auto& [image_id, index] : point.track) {
+      const auto image = model.images.find(image_id);
+      if (image == model.images.end() || index >= int(image->second.keypoints.size())) continue;
+      const View view{image->second.name, model.cameras.at(image->second.camera_id), image->second.pose};
+      Eigen::Vector2d pixel;
+      if (!view.WorldToPixel(point.position, &pixel)) continue;
+      total += (pixel - image->second.keypoints[index]).norm();
+      ++count;
+    }
+  return count ? total / double(count) : 0.0;
+}
+
+namespace {
+
+struct Bounds {
+  Eigen::Vector3d min, max, base;
+  std::string source;
+};
+
+// The tree's bounds in a Z-up model: the visual hull of DIR/mattes/ when every registered photo
+// has a matte; else the sparse points near where the cameras look (5th..95th percentiles).
+Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const HullOptions& hull_options,
+                  Progress& progress) {
+  const std::vector<View> views = model.Views();
+  std::vector<Image8> mattes;
+  for (const View& view : views) {
+    const fs::path matte = workspace / "mattes" / (fs::path(view.name).stem().string() + ".png");
+    if (!fs::is_regular_file(matte)) break;
+    mattes.push_back(ReadImage8(matte, 1));
+  }
+  if (mattes.size() == views.size()) {
+    const VisualHull hull = CarveVisualHullAuto(views, mattes, hull_options);
+    progress.Say("calibrate", Str("visual hull: ", hull.voxels, " voxels of ", hull.voxel_size));
+    Bounds bounds{hull.bounds_min, hull.bounds_max, hull.base, "visual hull"};
+    // The hull reaches below the trunk base (measured 4% of the height on studio sets); the ground
+    // points around the tree, when there are enough, say where the base really is.
+    const double height = hull.bounds_max.z() - hull.bounds_min.z();
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& [id, point] : model.points) points.push_back(point.position);
+    const std::optional<double> ground =
+        EstimateGroundHeight(points, hull.base.head<2>(), (hull.bounds_max - hull.bounds_min).head<2>().norm(),
+                             hull.bounds_min.z() - 0.05 * height, hull.bounds_min.z() + 0.2 * height, 0.01 * height);
+    if (ground && *ground > hull.base.z()) {
+      progress.Say("calibrate", Str("ground found ", *ground - hull.base.z(), " above the hull's base; base moved up"));
+      bounds.base.z() = *ground;
+      bounds.min.z() = *ground;
+      bounds.source = "visual hull and ground points";
+    }
+    return bounds;
+  }
+  progress.Say("calibrate", "no mattes for every photo; bounds from the sparse points");
+  const Eigen::Vector3d target = LookAtPoint(views);
+  double distance = 0;
+  for (const View& view : views) distance += (view.pose.Center() - target).norm();
+  distance /= double(views.size());
+  std::vector<double> axes[3];
+  for (const auto& [id, point] : model.points)
+    if ((point.position - target).norm() < 0.5 * distance)
+      for (int k = 0; k < 3; ++k) axes[k].push_back(point.position[k]);
+  if (axes[0].size() < 10)
+    Fail("cannot bound the tree: no mattes in ", (workspace / "mattes").string(),
+         " and too few sparse points near it; run 'voltree matte' first");
+  Bounds bounds;
+  for (int k = 0; k < 3; ++k) {
+    std::sort(axes[k].begin(), axes[k].end());
+    bounds.min[k] = axes[k][axes[k].size() * 5 / 100];
+    bounds.max[k] = axes[k][axes[k].size() * 95 / 100];
+  }
+  bounds.base = {0.5 * (bounds.min.x() + bounds.max.x()), 0.5 * (bounds.min.y() + bounds.max.y()), bounds.min.z()};
+  bounds.source = "sparse points";
+  return bounds;
+}
+
+void WriteSceneJson(const fs::path& path, const CalibrateReport& report, const std::string& source) {
+  auto vector = [](const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
+  const nlohmann::json scene = {{"frame", "tree"},
+                                {"up", {0, 0, 1}},
+                                {"units", report.units},
+                                {"bounds_min", vector(report.bounds_min)},
+                                {"bounds_max", vector(report.bounds_max)},
+                                {"source", source}};
+  WriteFileAtomic(path, scene.dump(2) + "\n");
+}
+
+}  // namespace
+
+CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
+  options.Check();
+  CalibrateReport report;
+  const std::vector<std::string> images = ListImages(workspace / "images");
+  report.images = int(images.size());
+  if (images.empty()) Fail((workspace / "images").string(), ": no photos (png, jpg, tif, bmp)");
+  const fs::path colmap_folder = workspace / "colmap";
+  const bool run_colmap = options.import_model.empty() && options.known_cameras.empty();
+  if (run_colmap && fs::exists(colmap_folder / "database.db") && !options.force)
+    Fail((colmap_folder / "database.db").string(), " already exists; pass --force to calibrate again");
+  // Fails now, before any work, when sparse/ holds a model and --force is missing.
+  StagedDirectory sparse(workspace / "sparse", options.force);
+
+  ColmapModel model;
+  std::string source = "colmap";
+  if (!options.known_cameras.empty()) {
+    model = ReadColmapModel(options.known_cameras);
+    source = "known-cameras";
+  } else if (!options.import_model.empty()) {
+    model = ReadColmapModel(options.import_model);
+  } else {
+    std::error_code ignored;
+    fs::remove(colmap_folder / "database.db", ignored);
+    fs::remove_all(colmap_folder / "sparse", ignored);
+    fs::remove_all(colmap_folder / "masks", ignored);
+    const ColmapSfmResult sfm = RunColmapSfm(workspace, colmap_folder, options, progress);
+    model = sfm.model;
+    report.models_found = sfm.models_found;
+    report.stage_seconds = sfm.stage_seconds;
+  }
+  model.Check();
+
+  // Registration: every photo should have a camera.
+  std::vector<std::string> registered;
+  for (const auto& [id, image] : model.images) registered.push_back(image.name);
+  std::sort(registered.begin(), registered.end());
+  for (const std::string& name : images)
+    if (!std::binary_search(registered.begin(), registered.end(), name)) report.unregistered.push_back(name);
+  report.registered = int(images.size() - report.unregistered.size());
+  if (report.registered != int(model.images.size()))
+    progress.Say("calibrate", Str("the model has ", model.images.size() - report.registered,
+                                  " cameras for photos not in images/; they are kept"));
+  auto list = [](const std::vector<std::string>& names) {
+    std::string joined;
+    for (size_t i = 0; i < names.size() && i < 20; ++i) joined += (i ? ", " : "") + names[i];
+    return names.size() > 20 ? joined + Str(", ... (", names.size(), " in all)") : joined;
+  };
+  if (report.registered < 3)
+    Fail("only ", report.registered, " of ", images.size(), " photos registered (at least 3 needed); ",
+         "the photos need more overlap or texture. Logs in ", colmap_folder.string());
+  if (report.registered < options.min_registered * report.images)
+    Fail("only ", report.registered, " of ", report.images, " photos registered (--min-registered ",
+         options.min_registered, "); missing: ", list(report.unregistered));
+  if (!report.unregistered.empty())
+    progress.Say("calibrate", Str(report.unregistered.size(), " photos did not register: ", list(report.unregistered)));
+
+  // Into the tree frame.
+  if (options.known_cameras.empty()) {
+    const Eigen::Vector3d up = options.up ? options.up->normalized() : EstimateUp(model.Views());
+    const Similarity level{1.0, RotationToZUp(up), Eigen::Vector3d::Zero()};
+    model = TransformModel(model, level);
+    const Bounds bounds = FindBounds(workspace, model, options.hull, progress);
+    const double height = bounds.max.z() - bounds.base.z();
+    const double scale = options.height_metres ? *options.height_metres / height : 1.0;
+    const Similarity to_origin{scale, Eigen::Quaterniond::Identity(), -scale * bounds.base};
+    model = TransformModel(model, to_origin);
+    report.bounds_min = to_origin.Apply(bounds.min);
+    report.bounds_max = to_origin.Apply(bounds.max);
+    report.bounds_source = bounds.source;
+    report.units = options.height_metres ? "metres" : "reconstruction";
+  } else {
+    const Bounds bounds = FindBounds(workspace, model, options.hull, progress);
+    report.bounds_min = bounds.min;
+    report.bounds_max = bounds.max;
+    report.bounds_source = bounds.source;
+    report.units = "metres";  // known cameras are taken to be in the tree frame already
+  }
+  report.mean_reprojection_error = MeanReprojectionError(model);
+
+  WriteColmapText(sparse.path(), model);
+  sparse.Commit();
+  WriteSceneJson(workspace / "scene.json", report, source);
+  progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
+                                report.mean_reprojection_error, " px; wrote ", (workspace / "sparse").string(),
+                                " and scene.json"));
+  return report;
+}
+
+}  // namespace voltree

@@ -1,0 +1,69 @@
+// `voltree calibrate`: cameras for a capture workspace. Runs COLMAP (or imports a model), checks
+// that enough photos registered, normalizes the scene into the tree frame and writes DIR/sparse/
+// and DIR/scene.json. COLMAP's raw output stays in DIR/colmap/.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "capture/normalize_hull.h"
+#include "core/colmap_model.h"
+#include "core/progress.h"
+
+namespace voltree {
+
+// Which pixels COLMAP may take features from, when DIR/mattes/ exists.
+//   kAll:  every pixel. The ground and the surroundings are rigid and well textured, the tree moves
+//          in the wind and repeats itself; on synthetic sets they register best (see bench/calibrate).
+//   kTree: the tree only (the matte, dilated a little), as ARCHITECTURE suggests against a busy,
+//          changing background (people, traffic).
+//   kNear: the tree and a band around it (the ground at its base), not the distant background.
+enum class FeatureMask { kAll, kTree, kNear };
+FeatureMask FeatureMaskFromName(const std::string& name);  // "all", "tree", "near"; Error otherwise
+
+struct CalibrateOptions {
+  std::string camera_model = "SIMPLE_RADIAL";  // COLMAP's model for the shared camera
+  std::vector<double> camera_params;           // known intrinsics (COLMAP order): kept fixed
+  int max_image_size = 1600;                   // --SiftExtraction.max_image_size
+  int max_features = 8192;                     // --SiftExtraction.max_num_features
+  std::string matcher = "exhaustive";          // or "sequential" for photos taken in a walk
+  double min_registered = 0.8;                 // fraction of the photos that must register
+  FeatureMask mask = FeatureMask::kAll;
+  double near_band = 0.15;                     // kNear: band width as a fraction of the image diagonal
+  std::optional<Eigen::Vector3d> up;           // world up in COLMAP's frame; default from the cameras
+  std::optional<double> height_metres;         // tree height: scale to metres
+  std::filesystem::path import_model;          // an existing COLMAP model (text or binary), normalized
+  std::filesystem::path known_cameras;         // a model already in the tree frame, taken as is
+  HullOptions hull;
+  bool force = false;
+  void Check() const;  // throws Error
+};
+
+struct CalibrateReport {
+  int images = 0;                  // photos in DIR/images
+  int registered = 0;
+  std::vector<std::string> unregistered;
+  int models_found = 1;            // COLMAP models; the largest is kept
+  double mean_reprojection_error = 0;  // pixels, over all observations
+  std::vector<std::pair<std::string, double>> stage_seconds;  // COLMAP stages
+  std::string bounds_source;       // "visual hull", "sparse points"
+  Eigen::Vector3d bounds_min = Eigen::Vector3d::Zero(), bounds_max = Eigen::Vector3d::Zero();
+  std::string units;               // "metres" or "reconstruction"
+};
+
+CalibrateReport Calibrate(const std::filesystem::path& workspace, const CalibrateOptions& options,
+                          Progress& progress);
+
+// Mean distance in pixels between each observation and its 3D point's projection; 0 without
+// observations (a model stripped of its POINTS2D).
+double MeanReprojectionError(const ColmapModel& model);
+
+// Photos in `folder` (png, jpg, jpeg, tif, tiff, bmp; any case), file names sorted.
+std::vector<std::string> ListImages(const std::filesystem::path& folder);
+
+}  // namespace voltree

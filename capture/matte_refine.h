@@ -1,0 +1,22 @@
+// Internal: solves the unknown band of a trimap (see RefineMethod).
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "capture/matte_options.h"
+
+namespace voltree::matte {
+
+// `rgb`: CV_8UC3; `estimate`: CV_32F first alpha in [0, 1]; `trimap`: CV_8U 0/128/255;
+// `solve`: CV_8U, where the method replaces the estimate (unknown pixels only).
+// Returns CV_32F alpha in [0, 1], exactly 0 / 1 where the trimap is known.
+cv::Mat RefineAlpha(const cv::Mat& rgb, const cv::Mat& estimate, const cv::Mat& trimap, const cv::Mat& solve,
+                    const MatteOptions& options);
+
+// alphamat::infoFlow on the tiles that hold `solve` pixels, each with a margin of context; only
+// `solve` pixels are written. Tiles whose context has no known foreground or background keep
+// `estimate`.
+cv::Mat InfoFlowOnTiles(const cv::Mat& rgb, const cv::Mat& estimate, const cv::Mat& trimap, const cv::Mat& solve,
+                        int tile);
+
+}  // namespace voltree::matte

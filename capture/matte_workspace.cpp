@@ -1,0 +1,144 @@
+#include "capture/matte_workspace.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "capture/matte_foreground.h"
+#include "capture/matte_image.h"
+#include "core/error.h"
+#include "core/files.h"
+#include "core/image.h"
+
+namespace voltree {
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kImageExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp"};
+
+std::string Lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+bool IsImageFile(const fs::path& path) {
+  const std::string extension = Lower(path.extension().string());
+  return std::any_of(std::begin(kImageExtensions), std::end(kImageExtensions),
+                     [&](const char* known) { return extension == known; });
+}
+
+// One photo: its matte (computed or the user's) and its premultiplied foreground.
+struct MatteOutputs {
+  Image8 alpha, foreground;
+  std::string summary;
+};
+
+MatteOutputs MatteOnePhoto(const fs::path& photo_path, const MatteWorkspaceOptions& options) {
+  const Image8 photo = ReadImage8(photo_path, 3);
+  MatteOutputs out;
+  if (options.user_mattes.empty()) {
+    MatteResult result = MatteImage(photo, options.matte);
+    out.alpha = std::move(result.alpha);
+    out.foreground = std::move(result.foreground);
+    out.summary = Str("horizon at row ", result.horizon_row, " of ", photo.height);
+  } else {
+    const fs::path matte_path = FindUserMatte(options.user_mattes, photo_path);
+    out.alpha = ReadImage8(matte_path, 1);
+    if (out.alpha.width != photo.width || out.alpha.height != photo.height)
+      Fail(matte_path.string(), ": matte is ", out.alpha.width, "x", out.alpha.height, " but its photo ",
+           photo_path.string(), " is ", photo.width, "x", photo.height);
+    out.foreground = PremultipliedForeground(photo, out.alpha);
+    out.summary = Str("matte from ", matte_path.string());
+  }
+  size_t covered = 0;
+  for (uint8_t a : out.alpha.pixels) covered += a;
+  out.summary += Str(", ", int(std::lround(100.0 * covered / 255.0 / std::max<size_t>(1, out.alpha.pixels.size()))),
+                     "% covered");
+  return out;
+}
+
+}  // namespace
+
+void MatteWorkspaceOptions::Check() const {
+  matte.Check();
+  if (threads < 0) Fail("--threads: ", threads, " must be 0 (all cores) or positive");
+  if (!user_mattes.empty() && !fs::is_directory(user_mattes))
+    Fail(user_mattes.string(), ": --mattes expects a folder of mattes named like the photos");
+}
+
+std::vector<fs::path> ListPhotos(const fs::path& images_dir) {
+  if (!fs::is_directory(images_dir))
+    Fail(images_dir.string(), ": no such folder; expected the photos of the workspace there");
+  std::vector<fs::path> photos;
+  for (const auto& entry : fs::directory_iterator(images_dir))
+    if (entry.is_regular_file() && IsImageFile(entry.path()) && entry.path().filename().string()[0] != '.')
+      photos.push_back(entry.path());
+  std::sort(photos.begin(), photos.end());
+  if (photos.empty())
+    Fail(images_dir.string(), ": no photos (expected .png, .jpg, .jpeg, .tif, .tiff or .bmp files)");
+  std::map<std::string, fs::path> by_stem;
+  for (const fs::path& photo : photos) {
+    const auto [it, inserted] = by_stem.emplace(photo.stem().string(), photo);
+    if (!inserted)
+      Fail(photo.string(), ": has the same name as ", it->second.string(),
+           "; their mattes would collide in mattes/", photo.stem().string(), ".png");
+  }
+  return photos;
+}
+
+fs::path FindUserMatte(const fs::path& mattes_dir, const fs::path& photo) {
+  const std::string stem = photo.stem().string();
+  for (const char* extension : kImageExtensions) {
+    std::string upper = extension;
+    std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    for (const std::string& candidate : {stem + extension, stem + upper})
+      if (fs::is_regular_file(mattes_dir / candidate)) return mattes_dir / candidate;
+  }
+  Fail((mattes_dir / (stem + ".png")).string(), ": missing matte for photo ", photo.string());
+}
+
+void CheckMatteSize(const fs::path& matte, const fs::path& photo) {
+  const auto [mw, mh] = ReadImageSize(matte);
+  const auto [pw, ph] = ReadImageSize(photo);
+  if (mw != pw || mh != ph)
+    Fail(matte.string(), ": matte is ", mw, "x", mh, " but its photo ", photo.string(), " is ", pw, "x", ph);
+}
+
+size_t MatteWorkspace(const fs::path& dir, const MatteWorkspaceOptions& options, Progress& progress) {
+  options.Check();
+  const std::vector<fs::path> photos = ListPhotos(dir / "images");
+  // Check the user's mattes before any work, so a bad one fails fast.
+  if (!options.user_mattes.empty())
+    for (const fs::path& photo : photos) CheckMatteSize(FindUserMatte(options.user_mattes, photo), photo);
+  StagedDirectory mattes(dir / "mattes", options.force);
+  StagedDirectory foreground(dir / "foreground", options.force);
+
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+  std::atomic<size_t> done{0};
+  progress.Say("matte", Str(photos.size(), " photos in ", (dir / "images").string(),
+                            options.user_mattes.empty() ? Str(", refine ", RefineMethodName(options.matte.refine))
+                                                        : Str(", mattes from ", options.user_mattes.string())));
+  // Each photo is independent and written to its own files: the order threads take them in does
+  // not change any output.
+  tbb::parallel_for(size_t(0), photos.size(), [&](size_t i) {
+    const MatteOutputs out = MatteOnePhoto(photos[i], options);
+    const std::string name = photos[i].stem().string() + ".png";
+    WriteImage(mattes.path() / name, out.alpha);
+    WriteImage(foreground.path() / name, out.foreground);
+    progress.Say("matte", Str(++done, "/", photos.size(), " ", photos[i].filename().string(), ": ", out.summary));
+  });
+  mattes.Commit();
+  foreground.Commit();
+  return photos.size();
+}
+
+}  // namespace voltree
