@@ -1,0 +1,59 @@
+// Opacity estimation on the hierarchy, coarse to fine: at each level carve the candidates by the
+// visual hull, initialise each cell from its parent, solve the level's tomography (SART or
+// Ceres), and refine only the cells dense enough to matter. After the finest solve every coarser
+// level is rebuilt from it: a parent's sigma is the mean of its children's, so a ray crossing the
+// whole parent keeps its optical depth.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/progress.h"
+#include "reconstruct/ceres_solve.h"
+#include "reconstruct/grid.h"
+#include "reconstruct/matte_stats.h"
+#include "reconstruct/sart.h"
+#include "reconstruct/tomography.h"
+
+namespace voltree {
+
+enum class SolverKind { kSart, kCeres };
+
+struct OpacityOptions {
+  int levels = 7;
+  SolverKind solver = SolverKind::kSart;
+  TomographyOptions tomography;
+  SartOptions sart;
+  CeresSolveOptions ceres;
+  // A cell is refined when sigma * cell edge (its optical depth) reaches this; below it the cell
+  // is practically transparent (alpha < 0.2 %).
+  double refine_min_optical_depth = 0.002;
+};
+
+struct OpacityLevel {
+  std::vector<CellCoord> cells;  // sorted by CellLess
+  std::vector<float> density;
+};
+
+struct OpacityLevelReport {
+  size_t candidates = 0, kept = 0, rays = 0, entries = 0;
+  bool stored = false;
+  SolveReport solve;
+};
+
+struct OpacityResult {
+  std::vector<OpacityLevel> levels;          // final, consistent with the finest level
+  std::vector<OpacityLevel> solved;          // each level as solved, before the rebuild
+  std::vector<OpacityLevelReport> reports;
+};
+
+OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& views,
+                              const std::vector<MatteStats>& mattes, const OpacityOptions& options,
+                              Progress* progress);
+
+// Levels 0 .. finest-1 rebuilt from `finest` (cells at level `finest_level`): parent sigma = sum of
+// the children's sigma / branching^3. Cells with zero sigma are dropped first.
+std::vector<OpacityLevel> BuildHierarchyFromFinest(const OpacityLevel& finest, int finest_level, int branching);
+
+}  // namespace voltree

@@ -1,0 +1,73 @@
+// The reconstruct stage: calibrated views + mattes + foreground colours -> a Volume (octree of
+// densities with billboard textures at every level, pruned). See ARCHITECTURE.md "Reconstruct".
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/progress.h"
+#include "reconstruct/billboards.h"
+#include "reconstruct/opacity.h"
+#include "reconstruct/volume.h"
+
+namespace voltree {
+
+struct ReconstructOptions {
+  int levels = 7;             // level 0 = root ... levels-1 (64^3 cells for 7 levels of an octree)
+  int branching = 2;          // 2: octree, 3: tri-grid (Reche 2004)
+  int texels = 4;             // billboards are texels x texels (8 for Reche 2004)
+  double prune = 0.95;        // accumulated alpha in front above which a texel is hidden
+  SolverKind solver = SolverKind::kSart;
+  int iterations = 30;        // solver iterations per level
+  double relaxation = 1.0;    // SART lambda in (0, 2)
+  double huber = 0;           // Ceres only: Huber loss scale (0 = plain least squares)
+  int threads = 0;            // 0: all cores
+  double margin = 0.05;       // root cube = bounds' cube grown by this fraction of its edge per side
+  double carve_alpha = 0.02;  // pixels at or below this alpha are empty for carving
+  double refine_min_optical_depth = 0.002;
+  double samples_per_cell = 2;
+  double epsilon = 1e-3;
+  double billboard_scale = 1.0;
+  size_t max_stored_bytes = size_t(1) << 30;  // larger ray systems are streamed
+  size_t memory_limit_bytes = 0;              // 0: the memory available now (/proc/meminfo)
+
+  void Check() const;
+  nlohmann::json ToJson() const;
+};
+
+struct ReconstructInput {
+  std::vector<View> views;
+  std::vector<Image8> mattes;      // per view, 1 channel, the camera's size
+  std::vector<Image8> foreground;  // per view, premultiplied RGBA, the camera's size
+  Eigen::Vector3d bounds_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bounds_max = Eigen::Vector3d::Ones();
+  std::string source = "memory";   // names the inputs in error messages, e.g. the workspace
+};
+
+// Estimated peak bytes of a reconstruction, for the memory check.
+size_t EstimateReconstructBytes(const ReconstructInput& input, const ReconstructOptions& options);
+// Bytes available to this process now (MemAvailable), or 0 when unknown.
+size_t AvailableMemoryBytes();
+
+// Throws Error (naming the view or matte) for invalid cameras, views that do not see the bounds,
+// mattes of the wrong size, all-empty mattes, inverted/unmatted mattes, too little memory.
+void CheckReconstructInput(const ReconstructInput& input, const ReconstructOptions& options);
+
+// Timings and work counts, for benchmarks.
+struct ReconstructStats {
+  double solve_seconds = 0, billboard_seconds = 0;
+  size_t ray_passes = 0;    // sum over levels of rays x solver iterations
+  size_t texel_rays = 0;    // billboard texel rays traced
+  std::vector<OpacityLevelReport> levels;
+};
+
+Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& options, Progress* progress,
+                   ReconstructStats* stats = nullptr);
+
+}  // namespace voltree

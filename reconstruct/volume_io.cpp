@@ -1,0 +1,300 @@
+#include "reconstruct/volume_io.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/files.h"
+
+namespace voltree {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char kMagic[8] = {'V', 'T', 'V', 'O', 'L', 'B', 'I', 'N'};
+constexpr uint32_t kVersion = 1;
+static_assert(std::endian::native == std::endian::little, "volume.bin I/O assumes a little-endian host");
+
+uint64_t Fnv1a64(const char* data, size_t size) {
+  uint64_t hash = 1469598103934665603ull;
+  for (size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<uint8_t>(data[i]);
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+template <typename T>
+void Put(std::string* out, const T& value) {
+  out->append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+template <typename T>
+void PutArray(std::string* out, const T* data, size_t count) {
+  out->append(reinterpret_cast<const char*>(data), count * sizeof(T));
+}
+
+// Sequential reader over volume.bin that never reads past the end.
+class Reader {
+ public:
+  Reader(const std::string& bytes, size_t end, std::string file) : bytes_(bytes), end_(end), file_(std::move(file)) {}
+
+  template <typename T>
+  T Get(const char* what) {
+    T value;
+    Need(sizeof(T), what);
+    std::memcpy(&value, bytes_.data() + position_, sizeof(T));
+    position_ += sizeof(T);
+    return value;
+  }
+
+  template <typename T>
+  void GetArray(T* data, uint64_t count, const char* what) {
+    if (count > (end_ - position_) / sizeof(T)) Short(count * sizeof(T), what);
+    std::memcpy(data, bytes_.data() + position_, count * sizeof(T));
+    position_ += count * sizeof(T);
+  }
+
+  size_t position() const { return position_; }
+
+ private:
+  void Need(size_t size, const char* what) {
+    if (size > end_ - position_) Short(size, what);
+  }
+  [[noreturn]] void Short(uint64_t size, const char* what) {
+    Fail(file_, ": truncated at byte ", position_, ": expected ", size, " more bytes for ", what,
+         ", only ", end_ - position_, " left");
+  }
+  const std::string& bytes_;
+  size_t end_;
+  size_t position_ = 0;
+  std::string file_;
+};
+
+uint64_t Resolution(int branching, int level) {
+  uint64_t r = 1;
+  for (int i = 0; i < level; ++i) r *= branching;
+  return r;
+}
+
+nlohmann::json Vec(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+Eigen::Vector3d VecFrom(const nlohmann::json& j, const std::string& file, const char* field) {
+  if (!j.is_array() || j.size() != 3) Fail(file, ": field '", field, "' must be an array of 3 numbers");
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) {
+    if (!j[i].is_number()) Fail(file, ": field '", field, "' must be an array of 3 numbers");
+    v[i] = j[i].get<double>();
+  }
+  return v;
+}
+
+}  // namespace
+
+double PrunedPercent(const VolumeLevel& level) {
+  if (level.billboards_before_pruning == 0) return 0;
+  return 100.0 * double(level.billboards_before_pruning - level.billboards.size()) /
+         double(level.billboards_before_pruning);
+}
+
+void CheckVolume(const Volume& volume, const std::string& where) {
+  if (volume.branching != 2 && volume.branching != 3)
+    Fail(where, ": branching must be 2 or 3, got ", volume.branching);
+  if (volume.texels < 1 || volume.texels > 64) Fail(where, ": texels must be in [1, 64], got ", volume.texels);
+  if (!(volume.size > 0) || !std::isfinite(volume.size)) Fail(where, ": root cube size must be positive");
+  if (volume.views.size() > 65535) Fail(where, ": at most 65535 views, got ", volume.views.size());
+  const size_t texel_bytes = volume.BytesPerBillboard();
+  for (size_t l = 0; l < volume.levels.size(); ++l) {
+    const VolumeLevel& level = volume.levels[l];
+    const uint64_t resolution = Resolution(volume.branching, int(l));
+    if (uint64_t(level.resolution) != resolution)
+      Fail(where, ": level ", l, " has resolution ", level.resolution, ", expected ", resolution);
+    if (level.density.size() != level.cells.size())
+      Fail(where, ": level ", l, " has ", level.cells.size(), " cells but ", level.density.size(), " densities");
+    if (level.texels.size() != level.billboards.size() * texel_bytes)
+      Fail(where, ": level ", l, " has ", level.billboards.size(), " billboards but ", level.texels.size(),
+           " texel bytes, expected ", level.billboards.size() * texel_bytes);
+    if (level.billboards_before_pruning < level.billboards.size())
+      Fail(where, ": level ", l, " has more billboards after pruning than before");
+    for (size_t i = 0; i < level.cells.size(); ++i) {
+      const auto& c = level.cells[i];
+      if (c[0] >= resolution || c[1] >= resolution || c[2] >= resolution)
+        Fail(where, ": level ", l, " cell ", i, " lies outside the ", resolution, "^3 grid");
+      if (i > 0) {
+        const auto& p = level.cells[i - 1];
+        if (std::array{p[2], p[1], p[0]} >= std::array{c[2], c[1], c[0]})
+          Fail(where, ": level ", l, " cells are not sorted by (z, y, x) without duplicates at cell ", i);
+      }
+      if (!(level.density[i] >= 0) || !std::isfinite(level.density[i]))
+        Fail(where, ": level ", l, " cell ", i, " has density ", level.density[i], ", expected a finite value >= 0");
+    }
+    for (size_t i = 0; i < level.billboards.size(); ++i) {
+      const Billboard& b = level.billboards[i];
+      if (b.cell >= level.cells.size())
+        Fail(where, ": level ", l, " billboard ", i, " refers to cell ", b.cell, " of ", level.cells.size());
+      if (b.view >= volume.views.size())
+        Fail(where, ": level ", l, " billboard ", i, " refers to view ", b.view, " of ", volume.views.size());
+      if (i > 0) {
+        const Billboard& p = level.billboards[i - 1];
+        if (std::pair{p.cell, p.view} >= std::pair{b.cell, b.view})
+          Fail(where, ": level ", l, " billboards are not sorted by (cell, view) without duplicates at ", i);
+      }
+    }
+  }
+}
+
+std::string EncodeVolumeBinary(const Volume& volume) {
+  std::string out;
+  out.append(kMagic, sizeof(kMagic));
+  Put(&out, kVersion);
+  Put(&out, uint32_t(volume.texels));
+  Put(&out, uint32_t(volume.branching));
+  Put(&out, uint32_t(volume.levels.size()));
+  Put(&out, uint32_t(volume.views.size()));
+  for (const VolumeLevel& level : volume.levels) {
+    Put(&out, uint32_t(level.resolution));
+    Put(&out, uint64_t(level.cells.size()));
+    Put(&out, uint64_t(level.billboards.size()));
+    Put(&out, uint64_t(level.billboards_before_pruning));
+  }
+  for (const VolumeLevel& level : volume.levels) {
+    for (const auto& c : level.cells) PutArray(&out, c.data(), 3);
+    PutArray(&out, level.density.data(), level.density.size());
+    for (const Billboard& b : level.billboards) {
+      Put(&out, b.cell);
+      Put(&out, b.view);
+    }
+    PutArray(&out, level.texels.data(), level.texels.size());
+  }
+  Put(&out, Fnv1a64(out.data(), out.size()));
+  return out;
+}
+
+nlohmann::json VolumeJson(const Volume& volume, const nlohmann::json& provenance) {
+  nlohmann::json doc;
+  doc["format"] = "voltree-volume";
+  doc["version"] = kVersion;
+  doc["data"] = kVolumeBinName;
+  doc["origin"] = Vec(volume.origin);
+  doc["size"] = volume.size;
+  doc["branching"] = volume.branching;
+  doc["texels"] = volume.texels;
+  nlohmann::json views = nlohmann::json::array();
+  for (const VolumeView& v : volume.views)
+    views.push_back({{"name", v.name}, {"position", Vec(v.position)}, {"direction", Vec(v.direction)}, {"up", Vec(v.up)}});
+  doc["views"] = views;
+  nlohmann::json levels = nlohmann::json::array();
+  for (size_t l = 0; l < volume.levels.size(); ++l) {
+    const VolumeLevel& level = volume.levels[l];
+    levels.push_back({{"level", l},
+                      {"resolution", level.resolution},
+                      {"cells", level.cells.size()},
+                      {"billboards_before_pruning", level.billboards_before_pruning},
+                      {"billboards", level.billboards.size()},
+                      {"pruned_percent", PrunedPercent(level)},
+                      {"texel_bytes", level.texels.size()}});
+  }
+  doc["levels"] = levels;
+  doc["provenance"] = provenance;
+  return doc;
+}
+
+void WriteVolume(const fs::path& folder, const Volume& volume, const nlohmann::json& provenance, bool force) {
+  CheckVolume(volume, folder.string());
+  const std::string binary = EncodeVolumeBinary(volume);
+  const std::string json = VolumeJson(volume, provenance).dump(2) + "\n";
+  StagedDirectory staged(folder, force);
+  WriteFileAtomic(staged.path() / kVolumeBinName, binary);
+  WriteFileAtomic(staged.path() / kVolumeJsonName, json);
+  staged.Commit();
+}
+
+Volume ReadVolume(const fs::path& folder) {
+  const fs::path json_path = folder / kVolumeJsonName;
+  const fs::path bin_path = folder / kVolumeBinName;
+  const std::string json_file = json_path.string();
+  const std::string bin_file = bin_path.string();
+  if (!fs::is_directory(folder)) Fail(folder.string(), ": no such folder (expected a volume written by 'voltree reconstruct')");
+
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(ReadFile(json_path));
+  } catch (const nlohmann::json::exception& e) {
+    Fail(json_file, ": not valid JSON: ", e.what());
+  }
+  Volume volume;
+  try {
+    if (doc.value("format", "") != "voltree-volume") Fail(json_file, ": field 'format' must be \"voltree-volume\"");
+    if (doc.at("version").get<int>() != int(kVersion))
+      Fail(json_file, ": unsupported version ", doc.at("version").dump(), ", expected ", kVersion);
+    volume.origin = VecFrom(doc.at("origin"), json_file, "origin");
+    volume.size = doc.at("size").get<double>();
+    volume.branching = doc.at("branching").get<int>();
+    volume.texels = doc.at("texels").get<int>();
+    for (const auto& v : doc.at("views")) {
+      VolumeView view;
+      view.name = v.at("name").get<std::string>();
+      view.position = VecFrom(v.at("position"), json_file, "views[].position");
+      view.direction = VecFrom(v.at("direction"), json_file, "views[].direction");
+      view.up = VecFrom(v.at("up"), json_file, "views[].up");
+      volume.views.push_back(view);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    Fail(json_file, ": missing or mistyped field: ", e.what());
+  }
+
+  const std::string bytes = ReadFile(bin_path);
+  if (bytes.size() < sizeof(kMagic) + 8) Fail(bin_file, ": too short (", bytes.size(), " bytes) to be a volume");
+  if (std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) Fail(bin_file, ": bad magic, expected \"VTVOLBIN\"");
+  const size_t payload = bytes.size() - sizeof(uint64_t);
+  uint64_t stored_checksum;
+  std::memcpy(&stored_checksum, bytes.data() + payload, sizeof(uint64_t));
+  if (stored_checksum != Fnv1a64(bytes.data(), payload)) Fail(bin_file, ": checksum mismatch (file is corrupt)");
+
+  Reader in(bytes, payload, bin_file);
+  char magic[8];
+  in.GetArray(magic, 8, "the magic");
+  const uint32_t version = in.Get<uint32_t>("the version");
+  if (version != kVersion) Fail(bin_file, ": unsupported version ", version, ", expected ", kVersion);
+  const uint32_t texels = in.Get<uint32_t>("texels");
+  const uint32_t branching = in.Get<uint32_t>("branching");
+  const uint32_t level_count = in.Get<uint32_t>("the level count");
+  const uint32_t view_count = in.Get<uint32_t>("the view count");
+  if (int(texels) != volume.texels || int(branching) != volume.branching || view_count != volume.views.size())
+    Fail(bin_file, ": header (texels ", texels, ", branching ", branching, ", views ", view_count,
+         ") disagrees with ", json_file, " (texels ", volume.texels, ", branching ", volume.branching, ", views ",
+         volume.views.size(), ")");
+  if (level_count > 32) Fail(bin_file, ": level count ", level_count, " is implausible (expected at most 32)");
+  const size_t texel_bytes = volume.BytesPerBillboard();
+  volume.levels.resize(level_count);
+  for (VolumeLevel& level : volume.levels) {
+    level.resolution = int(in.Get<uint32_t>("a level resolution"));
+    const uint64_t cells = in.Get<uint64_t>("a level cell count");
+    const uint64_t billboards = in.Get<uint64_t>("a level billboard count");
+    level.billboards_before_pruning = in.Get<uint64_t>("a level billboard count before pruning");
+    // Counts are checked against the bytes left before anything is allocated.
+    const uint64_t left = payload - in.position();
+    if (cells > left / 10 || billboards > left / (6 + texel_bytes))
+      Fail(bin_file, ": level counts (", cells, " cells, ", billboards, " billboards) exceed the file size");
+    level.cells.resize(cells);
+    level.density.resize(cells);
+    level.billboards.resize(billboards);
+    level.texels.resize(billboards * texel_bytes);
+  }
+  for (VolumeLevel& level : volume.levels) {
+    for (auto& c : level.cells) in.GetArray(c.data(), 3, "cell coordinates");
+    in.GetArray(level.density.data(), level.density.size(), "densities");
+    for (Billboard& b : level.billboards) {
+      b.cell = in.Get<uint32_t>("a billboard cell");
+      b.view = in.Get<uint16_t>("a billboard view");
+    }
+    in.GetArray(level.texels.data(), level.texels.size(), "texels");
+  }
+  if (in.position() != payload)
+    Fail(bin_file, ": ", payload - in.position(), " unexpected bytes after the last level");
+  CheckVolume(volume, bin_file);
+  return volume;
+}
+
+}  // namespace voltree
