@@ -1,0 +1,32 @@
+// Where the bytes of a compressed tree go (Linz 2006 section 6), for `voltree info` and benches.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/vtree.h"
+
+namespace voltree {
+
+struct AssetBytes {
+  uint64_t uncompressed_textures = 0;  // every billboard as n x n RGBA8
+  uint64_t vq_codebooks = 0;           // colour codewords as RGB8 + alpha codewords as A8
+  uint64_t vq_indices = 0;             // (colour, alpha) index pair per billboard, u16 each
+  uint64_t gpu_atlas = 0;              // DXT5 atlas
+  uint64_t gpu_billboards = 0;         // per-billboard records (cell, view, colour, alpha)
+  uint64_t gpu_cells = 0;              // cell coordinates + density
+  uint64_t on_disk = 0;                // the .vtree file (0 when unknown)
+
+  uint64_t Vq() const { return vq_codebooks + vq_indices; }
+  // What replaces the RGBA8 textures on the GPU. The (colour, alpha) indices live in the billboard
+  // records, which an uncompressed renderer needs too (for atlas coordinates), so they count there.
+  uint64_t GpuTextures() const { return gpu_atlas; }
+  uint64_t Gpu() const { return gpu_atlas + gpu_billboards + gpu_cells; }
+};
+
+AssetBytes CountAssetBytes(const VtreeAsset& asset, uint64_t file_bytes = 0);
+
+// A human-readable table: levels, cells and billboards per level, views, codebooks, bytes.
+std::string DescribeAsset(const VtreeAsset& asset, const AssetBytes& bytes);
+
+}  // namespace voltree

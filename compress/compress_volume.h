@@ -1,0 +1,59 @@
+// The compress stage: Volume (reconstruct/) -> VtreeAsset (core/vtree.h).
+// Colour and alpha codebooks by GLA, black-texel fix, DXT5 codebook atlas, billboard records.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "compress/billboard_vectors.h"
+#include "compress/black_texels.h"
+#include "compress/gla.h"
+#include "core/progress.h"
+#include "core/vtree.h"
+#include "reconstruct/volume.h"
+
+namespace voltree {
+
+struct CompressOptions {
+  int colour_codebook = 512;  // Linz 2006 uses 512 (1024 for a low-contrast tree)
+  int alpha_codebook = 512;
+  ColourSpace space = ColourSpace::kLab;
+  CodewordRule rule = CodewordRule::kClosestMember;
+  bool alpha_weighted = false;  // weight colour distances by texel alpha
+  double tolerance = 1e-3;
+  int max_iterations = 40;
+  uint64_t seed = 1;
+  int black_threshold = 4;  // a quantized texel with all channels <= this is "black"
+
+  void Check() const;
+  nlohmann::json ToJson() const;  // for the asset's provenance
+};
+
+struct CompressStats {
+  size_t billboards = 0;
+  GlaResult colour;  // codebook, assignment, distortion history
+  GlaResult alpha;
+  size_t black_texels_fixed = 0;
+  double psnr_vq = 0;    // billboards rebuilt from the 8-bit codewords
+  double psnr_dxt5 = 0;  // billboards as the renderer fetches them from the DXT5 atlas
+  std::vector<uint8_t> colour_rgb;  // decoded codewords after the black fix, K x n*n x 3
+  std::vector<uint8_t> alpha_bytes; // decoded alpha codewords, K x n*n
+};
+
+struct CompressResult {
+  VtreeAsset asset;
+  CompressStats stats;
+};
+
+CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress = nullptr);
+
+// Billboards rebuilt from codewords (premultiplied RGBA8), in GatherTexels order.
+std::vector<uint8_t> DecodeBillboardsFromCodewords(const std::vector<uint8_t>& colour_rgb,
+                                                   const std::vector<uint8_t>& alpha_bytes, int texels,
+                                                   const std::vector<CodewordUse>& uses);
+// Billboards as fetched from the asset's DXT5 atlas (decoded with our reference decoder).
+std::vector<uint8_t> DecodeBillboardsFromAtlas(const VtreeAsset& asset);
+
+}  // namespace voltree

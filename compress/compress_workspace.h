@@ -1,0 +1,24 @@
+// The compress stage on a capture workspace: DIR/volume/ -> DIR/tree.vtree.
+#pragma once
+
+#include <filesystem>
+
+#include "compress/compress_volume.h"
+#include "core/progress.h"
+#include "core/vtree.h"
+
+namespace voltree {
+
+struct CompressWorkspaceOptions {
+  std::filesystem::path output;  // empty: DIR/tree.vtree
+  bool zstd = false;             // zstd-compress the asset's chunks on disk
+  bool force = false;            // overwrite an existing asset
+};
+
+// Reads DIR/volume, compresses it and writes the asset atomically; refuses an existing asset
+// without `force` before any work. Returns the asset's path.
+std::filesystem::path CompressWorkspace(const std::filesystem::path& dir, const CompressOptions& options,
+                                        const CompressWorkspaceOptions& workspace_options, Progress* progress,
+                                        CompressStats* stats = nullptr);
+
+}  // namespace voltree

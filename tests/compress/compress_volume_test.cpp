@@ -1,0 +1,73 @@
+// The whole compress stage on a synthetic volume: quality, determinism, records.
+#include "compress/compress_volume.h"
+
+#include <gtest/gtest.h>
+
+#include "compress/synthetic_volume.h"
+#include "core/error.h"
+
+namespace voltree {
+namespace {
+
+Volume TestVolume() {
+  SyntheticVolumeOptions options;
+  options.billboards = 3000;
+  return MakeSyntheticVolume(options);
+}
+
+CompressOptions SmallCodebooks() {
+  CompressOptions options;
+  options.colour_codebook = 128;
+  options.alpha_codebook = 128;
+  return options;
+}
+
+TEST(CompressVolume, QualityAndRecords) {
+  const Volume volume = TestVolume();
+  const CompressResult result = CompressVolume(volume, SmallCodebooks());
+  const VtreeAsset& asset = result.asset;
+  ASSERT_EQ(asset.levels.size(), volume.levels.size());
+  EXPECT_EQ(asset.BillboardCount(), result.stats.billboards);
+  EXPECT_EQ(asset.colour_codebook_size, 128u);
+  for (size_t l = 0; l < volume.levels.size(); ++l)
+    for (size_t b = 0; b < volume.levels[l].billboards.size(); ++b) {
+      EXPECT_EQ(asset.levels[l].billboards[b].cell, volume.levels[l].billboards[b].cell);
+      EXPECT_EQ(asset.levels[l].billboards[b].view, volume.levels[l].billboards[b].view);
+    }
+  // Measured on this volume (2476 billboards, 128 + 128 codewords): 29.1 dB after VQ, 29.0 dB
+  // after DXT5 (32 codewords: 25.8 dB, 512: 33.0 dB).
+  EXPECT_GT(result.stats.psnr_vq, 28.0);
+  EXPECT_GT(result.stats.psnr_dxt5, 27.5);
+  EXPECT_LE(result.stats.psnr_dxt5, result.stats.psnr_vq + 0.5);
+  EXPECT_EQ(asset.atlas.tile_count, 128u);
+  EXPECT_EQ(asset.atlas.width, 48u);  // 12 tiles of 4 texels per row
+}
+
+TEST(CompressVolume, MoreCodewordsMoreQuality) {
+  const Volume volume = TestVolume();
+  CompressOptions options = SmallCodebooks();
+  options.colour_codebook = options.alpha_codebook = 32;
+  const double small = CompressVolume(volume, options).stats.psnr_vq;
+  options.colour_codebook = options.alpha_codebook = 512;
+  const double large = CompressVolume(volume, options).stats.psnr_vq;
+  EXPECT_GT(large, small + 2.0);
+}
+
+TEST(CompressVolume, Deterministic) {
+  const Volume volume = TestVolume();
+  CompressOptions options = SmallCodebooks();
+  options.alpha_weighted = true;
+  EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset), SerializeAsset(CompressVolume(volume, options).asset));
+}
+
+TEST(CompressVolume, RejectsEmptyVolumesAndBadOptions) {
+  Volume empty;
+  empty.levels.resize(1);
+  EXPECT_THROW(CompressVolume(empty, SmallCodebooks()), Error);
+  CompressOptions bad;
+  bad.alpha_codebook = 70000;
+  EXPECT_THROW(bad.Check(), Error);
+}
+
+}  // namespace
+}  // namespace voltree

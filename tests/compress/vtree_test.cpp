@@ -1,0 +1,239 @@
+// The .vtree format: exact round trips, deterministic bytes, and clear errors (never crashes) on
+// every kind of corruption.
+#include "core/vtree.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "compress/compress_volume.h"
+#include "compress/synthetic_volume.h"
+#include "core/crc32.h"
+#include "core/error.h"
+
+namespace voltree {
+namespace {
+
+VtreeAsset SmallAsset() {
+  SyntheticVolumeOptions volume_options;
+  volume_options.billboards = 600;
+  volume_options.levels = 3;
+  CompressOptions options;
+  options.colour_codebook = 40;
+  options.alpha_codebook = 24;
+  return CompressVolume(MakeSyntheticVolume(volume_options), options).asset;
+}
+
+const VtreeAsset& Asset() {
+  static const VtreeAsset asset = SmallAsset();
+  return asset;
+}
+
+std::string ErrorOf(std::string_view bytes, const VtreeReadOptions& options = {}) {
+  try {
+    ParseAsset(bytes, "tree.vtree", options);
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Vtree, RoundTripIsExact) {
+  for (bool zstd : {false, true}) {
+    VtreeWriteOptions options;
+    options.zstd = zstd;
+    const std::string bytes = SerializeAsset(Asset(), options);
+    const VtreeAsset back = ParseAsset(bytes, "tree.vtree");
+    EXPECT_EQ(SerializeAsset(back, options), bytes);
+    ASSERT_EQ(back.levels.size(), Asset().levels.size());
+    for (size_t l = 0; l < back.levels.size(); ++l) {
+      EXPECT_EQ(back.levels[l].cells, Asset().levels[l].cells);
+      EXPECT_EQ(back.levels[l].density, Asset().levels[l].density);
+      ASSERT_EQ(back.levels[l].billboards.size(), Asset().levels[l].billboards.size());
+      for (size_t b = 0; b < back.levels[l].billboards.size(); ++b) {
+        const auto &x = back.levels[l].billboards[b], &y = Asset().levels[l].billboards[b];
+        EXPECT_TRUE(x.cell == y.cell && x.view == y.view && x.colour == y.colour && x.alpha == y.alpha);
+      }
+    }
+    EXPECT_EQ(back.atlas.dxt5, Asset().atlas.dxt5);
+    ASSERT_EQ(back.views.size(), Asset().views.size());
+    EXPECT_EQ(back.views[3].position, Asset().views[3].position);  // doubles exact through JSON
+    EXPECT_EQ(back.views[3].name, Asset().views[3].name);
+    EXPECT_EQ(back.origin, Asset().origin);
+    EXPECT_EQ(back.provenance, Asset().provenance);
+    EXPECT_EQ(back.colour_codebook_size, 40u);
+  }
+}
+
+TEST(Vtree, SameInputSameBytes) {
+  EXPECT_EQ(SerializeAsset(SmallAsset()), SerializeAsset(Asset()));
+  VtreeWriteOptions zstd;
+  zstd.zstd = true;
+  EXPECT_EQ(SerializeAsset(SmallAsset(), zstd), SerializeAsset(Asset(), zstd));
+  EXPECT_LT(SerializeAsset(Asset(), zstd).size(), SerializeAsset(Asset()).size());
+}
+
+TEST(Vtree, WriteIsAtomicAndRefusesToOverwrite) {
+  const auto folder = std::filesystem::temp_directory_path() / ("vtree_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const auto path = folder / "tree.vtree";
+  WriteAsset(path, Asset());
+  EXPECT_THROW(WriteAsset(path, Asset()), Error);
+  VtreeWriteOptions force;
+  force.force = true;
+  WriteAsset(path, Asset(), force);
+  EXPECT_EQ(SerializeAsset(ReadAsset(path)), SerializeAsset(Asset()));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), {}), 1);  // no temporaries left
+  std::filesystem::remove_all(folder);
+}
+
+TEST(Vtree, TruncatedAtEveryChunkBoundaryAndRandomOffsets) {
+  for (bool zstd : {false, true}) {
+    VtreeWriteOptions options;
+    options.zstd = zstd;
+    const std::string bytes = SerializeAsset(Asset(), options);
+    std::vector<size_t> cuts = {0, 4, 8, 11, 12, 13};
+    for (const auto& chunk : ListChunks(bytes, "tree.vtree")) {
+      for (size_t delta : {0, 1, 4, 27, 28, 29}) cuts.push_back(chunk.offset + delta);
+      cuts.push_back(chunk.offset + chunk.stored_bytes - 1);
+    }
+    std::mt19937 rng(1);
+    for (int i = 0; i < 200; ++i) cuts.push_back(rng() % bytes.size());
+    for (size_t cut : cuts) {
+      if (cut >= bytes.size()) continue;
+      const std::string message = ErrorOf(std::string_view(bytes).substr(0, cut));
+      EXPECT_NE(message, "") << "truncated at " << cut << " was accepted";
+      EXPECT_EQ(message.rfind("tree.vtree", 0), 0u) << message;
+    }
+  }
+}
+
+TEST(Vtree, FlippedBytesAreCaughtByChecksums) {
+  const std::string bytes = SerializeAsset(Asset());
+  std::mt19937 rng(2);
+  for (int i = 0; i < 300; ++i) {
+    std::string corrupt = bytes;
+    const size_t at = rng() % bytes.size();
+    corrupt[at] = char(corrupt[at] ^ (1 + rng() % 255));
+    EXPECT_NE(ErrorOf(corrupt), "") << "flip at " << at << " was accepted";
+  }
+  // A flip inside the BBRD payload names the chunk, its offset and the checksum.
+  for (const auto& chunk : ListChunks(bytes, "tree.vtree")) {
+    if (chunk.tag != "BBRD") continue;
+    std::string corrupt = bytes;
+    corrupt[chunk.offset + 28 + 5] ^= 0x40;
+    EXPECT_EQ(ErrorOf(corrupt), "tree.vtree: chunk BBRD at byte " + std::to_string(chunk.offset) + ": checksum mismatch");
+    break;
+  }
+}
+
+TEST(Vtree, WrongMagicAndVersion) {
+  std::string bytes = SerializeAsset(Asset());
+  std::string bad_magic = bytes;
+  bad_magic[0] = 'X';
+  EXPECT_NE(ErrorOf(bad_magic).find("missing the VTREE magic"), std::string::npos);
+  bytes[8] = 2;
+  EXPECT_NE(ErrorOf(bytes).find("format version 2 is not supported"), std::string::npos);
+}
+
+// Rewrites the chunk with tag `tag` (the `which`-th one) through `edit`, with a valid checksum, so
+// that the semantic checks behind the checksum are reached.
+std::string EditChunk(const std::string& bytes, const std::string& tag, int which,
+                      const std::function<void(std::string&)>& edit) {
+  int seen = 0;
+  for (const auto& chunk : ListChunks(bytes, "t")) {
+    if (chunk.tag != tag || seen++ != which) continue;
+    std::string payload = bytes.substr(chunk.offset + 28, chunk.stored_bytes - 28);
+    edit(payload);
+    std::string header = bytes.substr(chunk.offset, 24);
+    const uint64_t size = payload.size();
+    for (int i = 0; i < 8; ++i) header[8 + i] = header[16 + i] = char((size >> (8 * i)) & 0xFF);
+    const uint32_t crc = Crc32(payload.data(), payload.size(), Crc32(header.data(), header.size()));
+    std::string crc_bytes(4, '\0');
+    for (int i = 0; i < 4; ++i) crc_bytes[i] = char((crc >> (8 * i)) & 0xFF);
+    return bytes.substr(0, chunk.offset) + header + crc_bytes + payload +
+           bytes.substr(chunk.offset + chunk.stored_bytes);
+  }
+  ADD_FAILURE() << "no chunk " << tag;
+  return bytes;
+}
+
+void PutU32(std::string& payload, size_t at, uint32_t value) {
+  for (int i = 0; i < 4; ++i) payload[at + i] = char((value >> (8 * i)) & 0xFF);
+}
+void PutU16(std::string& payload, size_t at, uint16_t value) {
+  payload[at] = char(value & 0xFF);
+  payload[at + 1] = char(value >> 8);
+}
+
+TEST(Vtree, HugeCountsAndOutOfRangeIndices) {
+  const std::string bytes = SerializeAsset(Asset());
+  struct Case {
+    std::string tag;
+    int which;
+    std::function<void(std::string&)> edit;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {"CELL", 2, [](std::string& p) { PutU32(p, 8, 0xFFFFFFF0u); }, "cell count 4294967280 needs"},
+      {"BBRD", 1, [](std::string& p) { PutU32(p, 12, 0x7FFFFFFFu); }, "billboard count 2147483647 needs"},
+      {"BBRD", 2, [](std::string& p) { PutU32(p, 16, 999999); }, "billboard 0: cell 999999 out of range"},
+      {"BBRD", 2, [](std::string& p) { PutU16(p, 20, 500); }, "billboard 0: view 500 out of range [0, 12)"},
+      {"BBRD", 2, [](std::string& p) { PutU16(p, 22, 40); }, "billboard 0: colour index 40 out of range [0, 40)"},
+      {"BBRD", 2, [](std::string& p) { PutU16(p, 24, 24); }, "billboard 0: alpha index 24 out of range [0, 24)"},
+      {"BBRD", 0, [](std::string& p) { PutU32(p, 0, 1); }, "level index 1, expected 0"},
+      {"CELL", 1, [](std::string& p) { PutU32(p, 4, 4); }, "resolution 4, expected 2"},
+      {"CELL", 2, [](std::string& p) { PutU16(p, 12, 4); }, "cell 0 coordinate 4 out of range [0, 4)"},
+      {"CELL", 0, [](std::string& p) { p.replace(p.size() - 4, 4, "\xff\xff\xff\xff", 4); }, "density"},
+      {"ATLS", 0, [](std::string& p) { PutU32(p, 0, 1u << 30); }, "atlas size"},
+      {"ATLS", 0, [](std::string& p) { PutU32(p, 16, 3); }, "tile count 3 is less than the codebook size 40"},
+      {"ATLS", 0, [](std::string& p) { p.pop_back(); }, "DXT5 data has"},
+      {"HEAD", 0, [](std::string& p) { p = "{\"format\": \"voltree\", \"levels\": 1000000}"; },
+       "field 'levels' = 1000000 is out of range"},
+      {"HEAD", 0, [](std::string& p) { p[0] = '['; }, "header is not a JSON object"},
+      {"HEAD", 0,
+       [](std::string& p) {
+         auto j = nlohmann::json::parse(p);
+         j["codebooks"]["colour"] = "many";
+         p = j.dump();
+       },
+       "codebooks: field 'colour' must be an integer"},
+      {"HEAD", 0,
+       [](std::string& p) {
+         auto j = nlohmann::json::parse(p);
+         j["views"][0]["position"] = {1, 2};
+         p = j.dump();
+       },
+       "views[0]: field 'position' must be an array of 3 numbers"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = ErrorOf(EditChunk(bytes, c.tag, c.which, c.edit));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.tag << ": got '" << message << "'";
+    EXPECT_EQ(message.rfind("tree.vtree: chunk " + c.tag, 0), 0u) << message;
+  }
+  EXPECT_NE(ErrorOf(bytes + "x").find("unexpected bytes after the last chunk"), std::string::npos);
+}
+
+TEST(Vtree, RandomCorruptionWithoutChecksumsNeverCrashes) {
+  // With checksums off every mutation reaches the parsers; they must throw Error or succeed.
+  VtreeReadOptions options;
+  options.verify_checksums = false;
+  for (bool zstd : {false, true}) {
+    VtreeWriteOptions write;
+    write.zstd = zstd;
+    const std::string bytes = SerializeAsset(Asset(), write);
+    std::mt19937 rng(3);
+    for (int i = 0; i < 400; ++i) {
+      std::string corrupt = bytes;
+      for (int k = 0; k < 1 + int(rng() % 4); ++k) corrupt[rng() % corrupt.size()] = char(rng());
+      try {
+        ParseAsset(corrupt, "tree.vtree", options);
+      } catch (const Error&) {
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace voltree
