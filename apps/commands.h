@@ -6,6 +6,13 @@
 
 namespace voltree::app {
 
+void AddDemoCommand(CLI::App& app);
 void AddSynthCommand(CLI::App& app);
+void AddCalibrateCommand(CLI::App& app);
+void AddMatteCommand(CLI::App& app);
+void AddReconstructCommand(CLI::App& app);
+void AddCompressCommand(CLI::App& app);
+void AddInfoCommand(CLI::App& app);
+void AddRenderCommand(CLI::App& app);
 
 }  // namespace voltree::app

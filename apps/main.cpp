@@ -11,7 +11,14 @@ int main(int argc, char** argv) {
       "Run 'voltree COMMAND --help' for the options of a command."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "voltree 0.1.0");
+  voltree::app::AddDemoCommand(app);
   voltree::app::AddSynthCommand(app);
+  voltree::app::AddCalibrateCommand(app);
+  voltree::app::AddMatteCommand(app);
+  voltree::app::AddReconstructCommand(app);
+  voltree::app::AddCompressCommand(app);
+  voltree::app::AddInfoCommand(app);
+  voltree::app::AddRenderCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -1,0 +1,37 @@
+#include "apps/option_parsing.h"
+
+#include <regex>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace voltree::app {
+
+std::pair<int, int> ParseSize(const std::string& option, const std::string& text) {
+  static const std::regex kSize(R"((\d{1,5})(?:[xX](\d{1,5}))?)");
+  std::smatch match;
+  if (!std::regex_match(text, match, kSize))
+    Fail(option, " '", text, "': expected WIDTHxHEIGHT (e.g. 512x512) or one number for a square");
+  const int width = std::stoi(match[1].str());
+  const int height = match[2].matched ? std::stoi(match[2].str()) : width;
+  return {width, height};
+}
+
+std::vector<double> ParseNumbers(const std::string& option, const std::string& text) {
+  std::vector<double> numbers;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size()) Fail(option, " '", text, "': '", item, "' is not a number");
+    numbers.push_back(value);
+  }
+  return numbers;
+}
+
+}  // namespace voltree::app

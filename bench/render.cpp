@@ -1,0 +1,106 @@
+// Render benchmark: ms per frame at 1024x1024 for one tree on this machine's GL (llvmpipe here):
+// every forced level (the finest last), and the screen-space LOD at 1x to 16x the input
+// views' mean distance. Billboards are the pruned set the asset stores; the table also prints
+// how many there were before pruning.
+//   voltree-bench-render ASSET [--size 1024] [--frames 12]
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/vtree.h"
+#include "render/gl_context.h"
+#include "render/orbit.h"
+#include "render/tree_renderer.h"
+
+using namespace voltree;
+
+namespace {
+
+struct Row {
+  std::string name;
+  double median_ms = 0, traversal_ms = 0, billboards = 0, cells = 0;
+  int min_level = 0, max_level = 0;
+};
+
+Row Measure(TreeRenderer& renderer, const std::vector<View>& cameras, const TreeRenderOptions& options,
+            const std::string& name) {
+  Row row{name};
+  std::vector<double> ms, traversal;
+  row.min_level = 1 << 30;
+  renderer.ResetLodHistory();
+  renderer.Render(cameras[0], options);  // warm-up: shader compile, buffer growth
+  for (const View& camera : cameras) {
+    FrameStats stats;
+    renderer.Render(camera, options, &stats);
+    ms.push_back(stats.frame_ms);
+    traversal.push_back(stats.traversal_ms);
+    row.billboards += double(stats.billboards) / double(cameras.size());
+    row.cells += double(stats.cells) / double(cameras.size());
+    row.min_level = std::min(row.min_level, stats.min_level);
+    row.max_level = std::max(row.max_level, stats.max_level);
+  }
+  std::sort(ms.begin(), ms.end());
+  std::sort(traversal.begin(), traversal.end());
+  row.median_ms = ms[ms.size() / 2];
+  row.traversal_ms = traversal[traversal.size() / 2];
+  return row;
+}
+
+std::vector<View> Scaled(std::vector<View> cameras, const VtreeAsset& asset, double factor) {
+  const Eigen::Vector3d centre = 0.5 * (asset.bounds_min + asset.bounds_max);
+  for (View& view : cameras) {
+    const Eigen::Vector3d eye = centre + factor * (view.pose.Center() - centre);
+    view.pose = Pose::LookAt(eye, centre, Eigen::Vector3d::UnitZ());
+    // Keep the focal length: the tree gets smaller on screen, as when walking away.
+  }
+  return cameras;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"voltree render benchmark: ms per frame by level and LOD distance"};
+  std::string path;
+  int size = 1024, frames = 12;
+  app.add_option("ASSET", path, "A .vtree asset (e.g. from synth + reconstruct + compress)")->required();
+  app.add_option("--size", size, "Square frame size")->capture_default_str();
+  app.add_option("--frames", frames, "Orbit frames per row")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const VtreeAsset asset = ReadAsset(path);
+    GlContext context;
+    TreeRenderer renderer(asset);
+    OrbitOptions orbit;
+    orbit.frames = frames;
+    orbit.width = orbit.height = size;
+    const std::vector<View> cameras = OrbitCameras(asset, orbit);
+    std::printf("%s: %zu levels, %zu cells, %zu billboards (%s)\n%s, %dx%d, %d orbit frames per row\n\n", path.c_str(),
+                asset.levels.size(), asset.CellCount(), asset.BillboardCount(), "pruned, as stored",
+                context.renderer().c_str(), size, size, frames);
+    std::vector<Row> rows;
+    for (int level = 0; level < int(asset.levels.size()); ++level) {
+      TreeRenderOptions options;
+      options.lod.forced_level = level;
+      rows.push_back(Measure(renderer, cameras, options,
+                             Str("level ", level, level + 1 == int(asset.levels.size()) ? " (finest)" : "")));
+    }
+    for (double factor : {1.0, 2.0, 4.0, 8.0, 16.0})
+      rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), {}, Str("LOD at ", factor, "x distance")));
+    std::printf("%-22s %8s %12s %10s %12s %14s\n", "frames", "levels", "cells", "billboards", "median ms",
+                "traversal ms");
+    for (const Row& r : rows)
+      std::printf("%-22s %4d-%-3d %12.0f %10.0f %12.2f %14.2f\n", r.name.c_str(), r.min_level, r.max_level, r.cells,
+                  r.billboards, r.median_ms, r.traversal_ms);
+    std::printf("\nbillboards before pruning per level:");
+    for (const VtreeLevel& level : asset.levels)
+      std::printf(" %llu/%zu", static_cast<unsigned long long>(level.billboards_before_pruning), level.billboards.size());
+    std::printf(" (before/kept)\n");
+  } catch (const Error& error) {
+    std::fprintf(stderr, "voltree-bench-render: error: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}
