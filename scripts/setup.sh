@@ -26,7 +26,13 @@ fi
 
 build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$build_dir" -j "$jobs" 2>&1 | grep -E "error|warning|Error" || true
-test -x "$build_dir/voltree" || { echo "setup: build failed; run: cmake --build $build_dir" >&2; exit 1; }
+echo "setup: building in $build_dir with $jobs jobs (log: $build_dir/build.log)"
+mkdir -p "$build_dir"
+if ! { cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" &&
+       cmake --build "$build_dir" -j "$jobs"; } >"$build_dir/build.log" 2>&1; then
+  grep -E "error|Error" "$build_dir/build.log" | head -40 >&2
+  echo "setup: build failed; full log: $build_dir/build.log" >&2
+  exit 1
+fi
+grep -E "warning:" "$build_dir/build.log" | sort -u | head -20 >&2 || true
 echo "setup: built $build_dir/voltree"
