@@ -7,13 +7,11 @@
 #include <array>
 #include <cstdint>
 
+#include "core/srgb.h"
+
 namespace voltree {
 
 using Lab = std::array<float, 3>;  // L* in [0, 100], a* and b* roughly in [-128, 127]
-
-// sRGB-encoded component in [0, 1] -> linear light, and back.
-float SrgbToLinear(float encoded);
-float LinearToSrgb(float linear);
 
 // Float sRGB in [0, 1] -> Lab, like the CV_32F path of cvtColor.
 Lab SrgbToLab(float r, float g, float b);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/srgb.h"
 #include "samples/studio_lighting.h"
 
 namespace voltree {
@@ -33,9 +34,9 @@ StudioLayers ComposeStudioLayers(const ImageF& tree, const ImageF& backdrop) {
         uint8_t premultiplied = 0;
         if (alpha > 0) {
           const float straight = std::clamp(tree.at(x, y, c) / coverage, 0.0f, 1.0f);
-          premultiplied = static_cast<uint8_t>(std::lround(EncodeSrgb(straight) * alpha));
+          premultiplied = static_cast<uint8_t>(std::lround(LinearToSrgb(straight) * alpha));
         }
-        const uint8_t behind = ToByte(EncodeSrgb(std::clamp(backdrop.at(x, y, c), 0.0f, 1.0f)));
+        const uint8_t behind = ToByte(LinearToSrgb(std::clamp(backdrop.at(x, y, c), 0.0f, 1.0f)));
         layers.foreground.at(x, y, c) = premultiplied;
         layers.background.at(x, y, c) = behind;
         layers.photo.at(x, y, c) =

@@ -15,12 +15,4 @@ StudioLighting MakeStudioLighting(const StudioOptions& options) {
   return lighting;
 }
 
-float DecodeSrgb(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-float EncodeSrgb(float v) {
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
 }  // namespace voltree

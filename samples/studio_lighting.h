@@ -18,9 +18,4 @@ struct StudioLighting {
 
 StudioLighting MakeStudioLighting(const StudioOptions& options);
 
-// sRGB transfer functions on 0..1 values (named apart from compress/colour_space.h, which the
-// samples library does not link).
-float DecodeSrgb(float value);
-float EncodeSrgb(float value);
-
 }  // namespace voltree

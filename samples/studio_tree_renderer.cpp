@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/srgb.h"
 #include "render/gl_context.h"
 #include "samples/studio_projection.h"
 
@@ -173,8 +174,8 @@ void StudioTreeRenderer::DrawGroups(const ShaderProgram& program, bool depth_onl
       program.Set("uHasTexture", material.texture >= 0 ? 1 : 0);
       if (material.texture >= 0) textures_[material.texture].Bind(0);
     }
-    const Eigen::Vector4f base(DecodeSrgb(material.base_color[0]), DecodeSrgb(material.base_color[1]),
-                               DecodeSrgb(material.base_color[2]), material.base_color[3]);
+    const Eigen::Vector4f base(SrgbToLinear(material.base_color[0]), SrgbToLinear(material.base_color[1]),
+                               SrgbToLinear(material.base_color[2]), material.base_color[3]);
     program.Set("uBaseColor", base);
     program.Set("uAlphaCutoff", cutoff);
     program.Set("uDoubleSided", material.double_sided ? 1 : 0);
