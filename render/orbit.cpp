@@ -30,7 +30,16 @@ std::vector<View> OrbitCameras(const VtreeAsset& asset, const OrbitOptions& opti
   elevation /= double(asset.views.size());
   distance = std::max(distance, radius * options.margin * 1.01);  // stay outside the tree
   const Eigen::Vector3d first = asset.views[0].position - centre;
-  const double azimuth0 = std::atan2(first.y(), first.x());
+  constexpr double kDegrees = 180 / std::numbers::pi;
+  return OrbitCamerasAround(centre, radius, distance, elevation * kDegrees, std::atan2(first.y(), first.x()) * kDegrees,
+                            options);
+}
+
+std::vector<View> OrbitCamerasAround(const Eigen::Vector3d& centre, double radius, double distance,
+                                     double elevation_degrees, double azimuth_degrees, const OrbitOptions& options) {
+  options.Check();
+  if (!(radius > 0) || !(distance > 0)) Fail("orbit: radius and distance must be > 0, got ", radius, " and ", distance);
+  const double elevation = elevation_degrees * std::numbers::pi / 180, azimuth0 = azimuth_degrees * std::numbers::pi / 180;
   // Half field of view that holds the bounding sphere, with the margin.
   const double half_fov = std::min(std::asin(std::min(radius * options.margin / distance, 0.999)), 1.5);
   const double focal = 0.5 * std::min(options.width, options.height) / std::tan(half_fov);

@@ -21,4 +21,10 @@ struct OrbitOptions {
 // frame is at the azimuth of the first input view; frames are named frame_000.png, ...
 std::vector<View> OrbitCameras(const VtreeAsset& asset, const OrbitOptions& options);
 
+// N PINHOLE cameras on a horizontal circle about `centre` at `distance` and `elevation_degrees`,
+// starting at `azimuth_degrees`, with a field of view that holds a sphere of `radius` about the
+// centre (times the margin).
+std::vector<View> OrbitCamerasAround(const Eigen::Vector3d& centre, double radius, double distance,
+                                     double elevation_degrees, double azimuth_degrees, const OrbitOptions& options);
+
 }  // namespace voltree

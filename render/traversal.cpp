@@ -74,6 +74,10 @@ OctreeIndex::OctreeIndex(const VtreeAsset& asset) : branching_(asset.branching) 
   for (uint32_t c = 0; c < total; ++c) billboard_offset_[c + 1] += billboard_offset_[c];
 }
 
+double LodDistance(LodRule rule, const TraversalCamera& camera, const Eigen::Vector3d& centre) {
+  return rule == LodRule::kPlanes ? (centre - camera.eye).dot(camera.direction) : (centre - camera.eye).norm();
+}
+
 uint32_t OctreeIndex::FindBillboard(uint32_t cell, uint16_t view) const {
   for (uint32_t i = billboard_offset_[cell]; i < billboard_offset_[cell + 1]; ++i)
     if (billboards_[i].view == view) return i;
@@ -113,8 +117,10 @@ struct Traverser {
     const double size = index.CellSize(level);
     const bool has_children = index.ChildrenBegin(cell) != index.ChildrenEnd(cell);
     const int previous = refined ? (*refined)[cell] : -1;
-    const bool descend = has_children && ShouldDescend(lod, level, index.levels() - 1, size, texels, Distance(cell),
-                                                       0.5 * std::sqrt(3.0) * size, camera.focal_pixels, previous);
+    const bool descend =
+        has_children && ShouldDescend(lod, level, index.levels() - 1, size, texels,
+                                      LodDistance(lod.rule, camera, index.Centre(cell)), 0.5 * std::sqrt(3.0) * size,
+                                      camera.focal_pixels, previous);
     if (refined) {
       if (previous == 1 && !descend) ForgetSubtree(cell);  // stale history would bias a later refine
       (*refined)[cell] = descend;
@@ -136,6 +142,8 @@ struct Traverser {
 void TraverseBackToFront(const OctreeIndex& index, const TraversalCamera& camera, const LodOptions& lod, int texels,
                          std::vector<uint32_t>* out, std::vector<uint8_t>* refined) {
   out->clear();
+  if (lod.rule == LodRule::kPlanes && lod.forced_level < 0 && std::abs(camera.direction.norm() - 1) > 1e-6)
+    Fail("render: the planes LOD rule needs a unit view direction");
   if (index.levels() == 0) return;
   if (refined && refined->size() != index.CellCount()) refined->assign(index.CellCount(), 0);
   const Traverser traverser{index, camera, lod, texels, out, refined};

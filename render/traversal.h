@@ -56,10 +56,15 @@ class OctreeIndex {
 
 struct TraversalCamera {
   Eigen::Vector3d eye = Eigen::Vector3d::Zero();
-  double focal_pixels = 500;  // for the screen-space LOD rule
+  double focal_pixels = 500;                              // for the LOD rules
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();    // unit view direction; needed by LodRule::kPlanes
 };
 
-// Emits the cells to draw (global indices), back to front, into `out` (cleared first).
+// The distance the LOD rule measures a cell centre at (see lod.h).
+double LodDistance(LodRule rule, const TraversalCamera& camera, const Eigen::Vector3d& centre);
+
+// Emits the cells to draw (global indices), back to front, into `out` (cleared first). The
+// visibility order always uses the Euclidean distance; only the LOD decision follows lod.rule.
 // `refined`: optional per-cell LOD state across frames (CellCount() entries, 1 = refined last
 // frame; resized and zeroed when its size is wrong), read for hysteresis and updated.
 void TraverseBackToFront(const OctreeIndex& index, const TraversalCamera& camera, const LodOptions& lod, int texels,

@@ -12,46 +12,31 @@
 namespace voltree {
 namespace {
 
-constexpr const char* kVertexShader = R"(#version 430 core
-layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side
+// The vertex shader is kVertexHeader + kProjectionGlsl + kVertexMain.
+constexpr const char* kVertexHeader = R"(#version 430 core
+layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side (asset frame)
 layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // colour | alpha << 16
 layout(std430, binding = 2) readonly buffer Frame { uvec4 frame[]; };           // cell, A, B, 0
-uniform mat3 uWorldToCamera;
-uniform vec3 uTranslation;
-uniform vec2 uFocal;
-uniform vec2 uPrincipal;
-uniform vec4 uDistortion;  // k1 k2 p1 p2 (COLMAP OPENCV; zeros for PINHOLE)
-uniform vec2 uImageSize;
-uniform vec2 uDepthRange;
+)";
+
+constexpr const char* kVertexMain = R"(
 uniform vec3 uCameraRight, uCameraUp;  // world directions of image +X and -Y
-uniform vec3 uRight[2], uUp[2];        // the two input views' billboard axes
-uniform float uScale;
+uniform vec3 uRight[2], uUp[2];        // the two input views' billboard axes (world)
+uniform float uScale;                  // billboard side / cell edge
+uniform mat3 uModelRotation;           // the instance: world = T + s * R * asset
+uniform vec3 uModelTranslation;
+uniform float uModelScale;
+uniform float uRootSize;               // root cube edge (asset frame), for the level of a cell
 out vec3 vWorld;
-flat out vec4 vCell;
+flat out vec4 vCell;    // world centre, world side
 flat out uvec3 vTiles;  // tiles of A, tiles of B, presence mask
-
-vec2 Distort(vec2 n) {
-  float r2 = dot(n, n);
-  float radial = 1.0 + uDistortion.x * r2 + uDistortion.y * r2 * r2;
-  float uv = n.x * n.y;
-  return vec2(n.x * radial + 2.0 * uDistortion.z * uv + uDistortion.w * (r2 + 2.0 * n.x * n.x),
-              n.y * radial + 2.0 * uDistortion.w * uv + uDistortion.z * (r2 + 2.0 * n.y * n.y));
-}
-
-// Same projection as the studio: window coordinates are COLMAP pixel coordinates.
-vec4 ProjectToClip(vec3 world) {
-  vec3 c = uWorldToCamera * world + uTranslation;
-  float z = c.z;
-  vec2 pixel = uFocal * Distort(c.xy / max(z, 1e-6)) + uPrincipal;
-  vec2 ndc = vec2(2.0 * pixel.x / uImageSize.x - 1.0, 1.0 - 2.0 * pixel.y / uImageSize.y);
-  float n = uDepthRange.x, f = uDepthRange.y;
-  return vec4(ndc * z, ((f + n) * z - 2.0 * f * n) / (f - n), z);
-}
+flat out int vLevel;
 
 void main() {
   uvec4 record = frame[gl_InstanceID];
   vec4 cell = cells[record.x];
-  float side = uScale * cell.w;
+  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * cell.xyz);
+  float side = uScale * cell.w * uModelScale;
   // Half extents on the camera axes that hold both input views' squares (5% for perspective).
   vec2 half_extent = vec2(0.0);
   for (int k = 0; k < 2; ++k) {
@@ -60,8 +45,9 @@ void main() {
   }
   half_extent *= 0.5 * side * 1.05;
   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
-  vWorld = cell.xyz + corner.x * half_extent.x * uCameraRight + corner.y * half_extent.y * uCameraUp;
-  vCell = vec4(cell.xyz, side);
+  vWorld = centre + corner.x * half_extent.x * uCameraRight + corner.y * half_extent.y * uCameraUp;
+  vCell = vec4(centre, side);
+  vLevel = int(round(log2(uRootSize / cell.w)));
   uint mask = (record.y != 0xffffffffu ? 1u : 0u) | (record.z != 0xffffffffu ? 2u : 0u);
   vTiles = uvec3((mask & 1u) != 0u ? billboards[record.y] : 0u, (mask & 2u) != 0u ? billboards[record.z] : 0u, mask);
   gl_Position = ProjectToClip(vWorld);
@@ -75,10 +61,17 @@ uniform vec3 uDirection[2], uRight[2], uUp[2];  // the two input views' billboar
 uniform float uWeight[2];
 uniform int uTexels, uPitch, uTilesPerRow;
 uniform vec2 uAtlasSize;
+uniform int uTintLevels;
 in vec3 vWorld;
 flat in vec4 vCell;
 flat in uvec3 vTiles;
+flat in int vLevel;
 out vec4 color;
+
+// Distinct hues per level for LOD figures (level 0 red ... level 7 magenta).
+const vec3 kLevelColours[8] = vec3[8](vec3(0.9, 0.1, 0.1), vec3(0.95, 0.55, 0.1), vec3(0.95, 0.9, 0.1),
+                                      vec3(0.2, 0.8, 0.2), vec3(0.1, 0.8, 0.8), vec3(0.15, 0.35, 0.95),
+                                      vec3(0.6, 0.25, 0.9), vec3(0.95, 0.3, 0.8));
 
 vec2 TileTexel(uint tile, vec2 texel) {
   vec2 origin = vec2(float(int(tile) % uTilesPerRow), float(int(tile) / uTilesPerRow)) * float(uPitch);
@@ -105,6 +98,7 @@ void main() {
   if ((vTiles.z & 1u) != 0u) sum += uWeight[0] * Fetch(0, vTiles.x);
   if ((vTiles.z & 2u) != 0u) sum += uWeight[1] * Fetch(1, vTiles.y);
   if (sum.a <= 0.0) discard;
+  if (uTintLevels != 0) sum.rgb = sum.a * mix(sum.rgb / sum.a, kLevelColours[clamp(vLevel, 0, 7)], 0.7);
   color = sum;
 }
 )";
@@ -148,9 +142,10 @@ void TreeRenderOptions::Check() const {
 TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texels_(asset.texels), index_(asset) {
   if (asset.levels.empty()) Fail("render: the asset has no levels");
   if (views_.empty()) Fail("render: the asset has no input views");
-  radius_ = 0.5 * std::sqrt(3.0) * asset.size;  // the root cube's, so every cell is inside
+  root_size_ = asset.size;
   centre_ = asset.origin + Eigen::Vector3d::Constant(0.5 * asset.size);
-  program_ = ShaderProgram::Graphics("vtree billboards", kVertexShader, kFragmentShader);
+  program_ = ShaderProgram::Graphics("vtree billboards", std::string(kVertexHeader) + kProjectionGlsl + kVertexMain,
+                                     kFragmentShader);
 
   std::vector<float> cells(size_t(index_.CellCount()) * 4);
   for (uint32_t c = 0; c < index_.CellCount(); ++c) {
@@ -167,6 +162,8 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   }
   cells_buffer_ = MakeStorage(cells.data(), cells.size() * sizeof(float));
   billboards_buffer_ = MakeStorage(billboards.data(), billboards.size() * sizeof(uint32_t));
+  static_buffer_bytes_ = std::max<size_t>(cells.size() * sizeof(float), 16) + std::max<size_t>(billboards.size() * 4, 16);
+  atlas_bytes_ = asset.atlas.dxt5.size();
 
   const VtreeAtlas& atlas = asset.atlas;
   if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
@@ -188,7 +185,17 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   program_.Set("uPitch", int(atlas.tile_pitch));
   program_.Set("uTilesPerRow", int(atlas.tiles_per_row));
   program_.Set("uAtlasSize", Eigen::Vector2f(float(atlas.width), float(atlas.height)));
+  program_.Set("uRootSize", float(asset.size));
 }
+
+double TreeRenderer::BoundingRadius(double billboard_scale) const {
+  // Cells lie in the root cube (half diagonal sqrt(3)/2); a billboard square of side s * edge
+  // reaches sqrt(2)/2 * s * edge from its centre; the bound is linear in the edge (<= root), so the
+  // worst case is the root's billboard or a tiny cell at a corner.
+  return root_size_ * std::max(0.5 * std::sqrt(3.0), 0.5 * std::sqrt(2.0) * billboard_scale);
+}
+
+GpuMemory TreeRenderer::GpuBytes() const { return {static_buffer_bytes_ + frame_buffer_bytes_, atlas_bytes_}; }
 
 TreeRenderer::~TreeRenderer() {
   const GLuint buffers[] = {cells_buffer_, billboards_buffer_, frame_buffer_};
@@ -198,11 +205,14 @@ TreeRenderer::~TreeRenderer() {
 }
 
 FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options,
-                              std::vector<std::array<uint32_t, 4>>* records, std::vector<uint8_t>* lod_state) const {
+                              std::vector<std::array<uint32_t, 4>>* records, std::vector<uint8_t>* lod_state,
+                              const InstanceTransform& model) const {
   FrameStats stats;
-  const Eigen::Vector3d eye = camera.pose.Center();
+  // The asset's frame: view selection, traversal order and LOD are all computed there.
+  const Eigen::Vector3d eye = model.ToAsset(camera.pose.Center());
   stats.views = SelectViews(views_, centre_, eye);
-  TraversalCamera traversal_camera{eye, 0.5 * (camera.camera.FocalX() + camera.camera.FocalY())};
+  const TraversalCamera traversal_camera{eye, 0.5 * (camera.camera.FocalX() + camera.camera.FocalY()),
+                                         model.DirectionToAsset(camera.pose.ViewDirection())};
   std::vector<uint32_t> cells;
   TraverseBackToFront(index_, traversal_camera, options.lod, texels_, &cells, lod_state);
   records->clear();
@@ -221,57 +231,51 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
   return stats;
 }
 
-FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& options) {
+FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& options, const TreeDraw& draw) {
   options.Check();
   camera.camera.Check();
+  draw.model.Check();
   const auto start = Clock::now();
   std::vector<std::array<uint32_t, 4>> records;
-  FrameStats stats = Plan(camera, options, &records, options.lod_history ? &lod_state_ : nullptr);
+  std::vector<uint8_t>* lod_state = draw.lod_state ? draw.lod_state : options.lod_history ? &lod_state_ : nullptr;
+  FrameStats stats = Plan(camera, options, &records, lod_state, draw.model);
   stats.traversal_ms = Ms(start, Clock::now());
 
-  const size_t bytes = std::max<size_t>(records.size() * sizeof(records[0]), 16);
-  if (bytes > frame_buffer_bytes_) {  // grows only; reused between frames
-    if (frame_buffer_) glDeleteBuffers(1, &frame_buffer_);
-    frame_buffer_bytes_ = std::max(bytes, 2 * frame_buffer_bytes_);
-    glCreateBuffers(1, &frame_buffer_);
-    glNamedBufferData(frame_buffer_, GLsizeiptr(frame_buffer_bytes_), nullptr, GL_STREAM_DRAW);
-  }
-  if (!records.empty()) glNamedBufferSubData(frame_buffer_, 0, GLsizeiptr(records.size() * sizeof(records[0])), records.data());
-
-  // Camera uniforms (the studio's projection; distortion per vertex).
-  const Camera& intrinsics = camera.camera;
-  Eigen::Vector4f distortion = Eigen::Vector4f::Zero();
-  const std::vector<double>& p = intrinsics.params;
-  switch (intrinsics.model) {
-    case CameraModel::kSimplePinhole:
-    case CameraModel::kPinhole: break;
-    case CameraModel::kSimpleRadial: distortion[0] = float(p[3]); break;
-    case CameraModel::kRadial: distortion << float(p[3]), float(p[4]), 0, 0; break;
-    case CameraModel::kOpenCV: distortion << float(p[4]), float(p[5]), float(p[6]), float(p[7]); break;
-  }
-  const Eigen::Vector3d eye = camera.pose.Center();
-  const double distance = (eye - centre_).norm();
-  const double near = std::max(distance - radius_, 1e-4 * radius_), far = distance + radius_ * 1.01 + near;
-  const Eigen::Matrix3d rotation = camera.pose.rotation.toRotationMatrix();
-  program_.Set("uWorldToCamera", Eigen::Matrix3f(rotation.cast<float>()));
-  program_.Set("uTranslation", Eigen::Vector3f(camera.pose.translation.cast<float>()));
-  program_.Set("uFocal", Eigen::Vector2f(float(intrinsics.FocalX()), float(intrinsics.FocalY())));
-  program_.Set("uPrincipal", Eigen::Vector2f(intrinsics.PrincipalPoint().cast<float>()));
-  program_.Set("uDistortion", distortion);
-  program_.Set("uImageSize", Eigen::Vector2f(float(intrinsics.width), float(intrinsics.height)));
-  program_.Set("uDepthRange", Eigen::Vector2f(float(near), float(far)));
-  program_.Set("uCameraRight", Eigen::Vector3f(rotation.row(0).transpose().cast<float>()));
-  program_.Set("uCameraUp", Eigen::Vector3f((-rotation.row(1)).transpose().cast<float>()));
-  program_.Set("uEye", Eigen::Vector3f(eye.cast<float>()));
-  program_.Set("uScale", float(options.billboard_scale));
-  const BillboardFrame a = FrameOf(views_[stats.views.first]), b = FrameOf(views_[stats.views.second]);
-  SetVec3Array(program_, "uDirection", a.direction, b.direction);
-  SetVec3Array(program_, "uRight", a.right, b.right);
-  SetVec3Array(program_, "uUp", a.up, b.up);
-  const float weights[2] = {stats.views.first_weight, stats.views.second_weight};
-  glProgramUniform1fv(program_.id(), program_.Location("uWeight"), 2, weights);
-
   if (!records.empty()) {
+    const size_t bytes = records.size() * sizeof(records[0]);
+    if (bytes > frame_buffer_bytes_) {  // grows only; reused between frames and instances
+      if (frame_buffer_) glDeleteBuffers(1, &frame_buffer_);
+      frame_buffer_bytes_ = std::max(bytes, 2 * frame_buffer_bytes_);
+      glCreateBuffers(1, &frame_buffer_);
+      glNamedBufferData(frame_buffer_, GLsizeiptr(frame_buffer_bytes_), nullptr, GL_STREAM_DRAW);
+    }
+    glNamedBufferSubData(frame_buffer_, 0, GLsizeiptr(bytes), records.data());
+
+    const Eigen::Vector3d eye = camera.pose.Center();
+    const Eigen::Vector3d world_centre = draw.model.ToWorld(centre_);
+    const DepthRange depth = draw.depth ? *draw.depth
+                                        : DepthRangeForSphere(eye, world_centre,
+                                                              draw.model.scale * BoundingRadius(options.billboard_scale));
+    SetProjectionUniforms(program_, camera, depth);
+    const Eigen::Matrix3d rotation = camera.pose.rotation.toRotationMatrix();
+    program_.Set("uCameraRight", Eigen::Vector3f(rotation.row(0).transpose().cast<float>()));
+    program_.Set("uCameraUp", Eigen::Vector3f((-rotation.row(1)).transpose().cast<float>()));
+    program_.Set("uEye", Eigen::Vector3f(eye.cast<float>()));
+    program_.Set("uScale", float(options.billboard_scale));
+    program_.Set("uModelRotation", Eigen::Matrix3f(draw.model.Rotation().cast<float>()));
+    program_.Set("uModelTranslation", Eigen::Vector3f(draw.model.translation.cast<float>()));
+    program_.Set("uModelScale", float(draw.model.scale));
+    program_.Set("uTintLevels", options.tint_levels ? 1 : 0);
+    // The input views' billboard frames, turned with the instance (scale does not change a direction).
+    BillboardFrame a = FrameOf(views_[stats.views.first]), b = FrameOf(views_[stats.views.second]);
+    const Eigen::Matrix3f turn = draw.model.Rotation().cast<float>();
+    for (BillboardFrame* f : {&a, &b}) f->direction = turn * f->direction, f->right = turn * f->right, f->up = turn * f->up;
+    SetVec3Array(program_, "uDirection", a.direction, b.direction);
+    SetVec3Array(program_, "uRight", a.right, b.right);
+    SetVec3Array(program_, "uUp", a.up, b.up);
+    const float weights[2] = {stats.views.first_weight, stats.views.second_weight};
+    glProgramUniform1fv(program_.id(), program_.Location("uWeight"), 2, weights);
+
     program_.Use();
     glBindVertexArray(vertex_array_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_buffer_);
@@ -289,7 +293,7 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     glDepthMask(GL_TRUE);
     glBindVertexArray(0);
   }
-  glFinish();
+  if (draw.finish) glFinish();
   CheckGl("render: drawing the tree");
   stats.frame_ms = Ms(start, Clock::now());
   return stats;

@@ -18,17 +18,27 @@
 // blended by their angular weights and composited premultiplied over
 // (GL_ONE, GL_ONE_MINUS_SRC_ALPHA), depth-tested against opaque geometry without writing depth.
 // Colours stay in the atlas's sRGB encoding throughout (as the photos composite).
+//
+// Instances: Draw takes the instance's similarity (InstanceTransform). The CPU side (view
+// selection, traversal, LOD) works in the asset's frame with the eye and view direction mapped
+// into it; a similarity scales cell sizes and distances alike, so the LOD rules' texel-per-pixel
+// ratio is the same in either frame and scale is honoured. The shaders get the model transform as
+// uniforms and do everything else in world space, so depth is the world's and trees depth-test
+// correctly against other geometry drawn in the same frame (the scene's ground).
 #pragma once
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/framebuffer.h"
+#include "render/instance_transform.h"
 #include "render/lod.h"
+#include "render/projection.h"
 #include "render/shader.h"
 #include "render/traversal.h"
 #include "render/view_selection.h"
@@ -41,7 +51,24 @@ struct TreeRenderOptions {
   double billboard_scale = 1.0;                    // billboard side / cell edge, as reconstruct used
   bool lod_history = true;  // LOD hysteresis from the previous frames' choices (frames then depend
                             // on the sequence rendered before them, deterministically)
+  bool tint_levels = false;  // colour each billboard by its octree level (LOD figures)
   void Check() const;
+};
+
+// How one Draw places the tree in the frame.
+struct TreeDraw {
+  InstanceTransform model;                    // asset -> world
+  std::optional<DepthRange> depth;            // a frame's shared range; default: this instance's sphere
+  std::vector<uint8_t>* lod_state = nullptr;  // per-instance LOD history; default: the renderer's own
+                                              // (when options.lod_history)
+  bool finish = true;  // glFinish, so frame_ms includes the GPU work (a scene finishes once per frame)
+};
+
+// Bytes the renderer keeps on the GPU for one asset.
+struct GpuMemory {
+  size_t buffers = 0;  // cells, billboard records and the per-frame record buffer
+  size_t atlas = 0;    // DXT5 texture
+  size_t Total() const { return buffers + atlas; }
 };
 
 struct FrameStats {
@@ -62,15 +89,20 @@ class TreeRenderer {
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
   const OctreeIndex& index() const { return index_; }
+  // A sphere in the asset's frame that holds every billboard of every level (the root cube's, or
+  // wider when billboards are scaled beyond their cells).
+  Eigen::Vector3d BoundingCentre() const { return centre_; }
+  double BoundingRadius(double billboard_scale) const;
+  GpuMemory GpuBytes() const;
 
   // The cells and records of one frame without drawing (what Draw uploads); `lod_state` as in
-  // TraverseBackToFront (Draw passes its own when options.lod_history).
+  // TraverseBackToFront (Draw passes its own when options.lod_history). `model` places the tree.
   FrameStats Plan(const View& camera, const TreeRenderOptions& options, std::vector<std::array<uint32_t, 4>>* records,
-                  std::vector<uint8_t>* lod_state = nullptr) const;
+                  std::vector<uint8_t>* lod_state = nullptr, const InstanceTransform& model = {}) const;
   void ResetLodHistory() { lod_state_.clear(); }
-  // Draws into the bound framebuffer (viewport = the camera's image). Depth test on, depth write
-  // off; the caller clears. Blend state is restored to disabled afterwards.
-  FrameStats Draw(const View& camera, const TreeRenderOptions& options);
+  // Draws into the bound framebuffer (viewport = the camera's image) with ONE draw call. Depth
+  // test on, depth write off; the caller clears. Blend state is restored to disabled afterwards.
+  FrameStats Draw(const View& camera, const TreeRenderOptions& options, const TreeDraw& draw = {});
   // Renders into an internal framebuffer of the camera's size; straight-alpha RGBA8.
   Image8 Render(const View& camera, const TreeRenderOptions& options, FrameStats* stats = nullptr);
 
@@ -79,7 +111,8 @@ class TreeRenderer {
   int texels_;
   OctreeIndex index_;
   Eigen::Vector3d centre_;
-  double radius_;
+  double root_size_;
+  size_t atlas_bytes_ = 0, static_buffer_bytes_ = 0;
   ShaderProgram program_;
   unsigned cells_buffer_ = 0, billboards_buffer_ = 0, frame_buffer_ = 0, atlas_ = 0, vertex_array_ = 0;
   size_t frame_buffer_bytes_ = 0;

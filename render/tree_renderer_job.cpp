@@ -1,6 +1,8 @@
 #include "render/tree_renderer_job.h"
 
 #include <algorithm>
+#include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -11,6 +13,8 @@
 #include "core/vtree.h"
 #include "render/gl_context.h"
 #include "render/orbit.h"
+#include "render/scene_renderer.h"
+#include "render/turntable.h"
 
 namespace voltree {
 
@@ -19,7 +23,9 @@ void RenderJobOptions::Check() const {
   if ((orbit > 0) == !cameras.empty()) Fail("render: give exactly one of --orbit N and --cameras MODEL_DIR");
   if (orbit < 0) Fail("render: --orbit must be >= 1, got ", orbit);
   if (width < 0 || height < 0 || (width == 0) != (height == 0)) Fail("render: bad --size ", width, "x", height);
-  if (output.empty()) Fail("render: an output folder (-o DIR) is required");
+  if (output.empty() && turntable.empty()) Fail("render: an output folder (-o DIR) or --turntable FILE.mp4 is required");
+  if (!turntable.empty() && orbit == 0) Fail("render: --turntable encodes orbit frames; it cannot be used with --cameras");
+  if (!asset_folder.empty() && !IsSceneFile(asset)) Fail("render: --assets applies to a scene (.json), not to ", asset.string());
 }
 
 std::array<int, 2> ParseSize(const std::string& text, const std::string& what) {
@@ -60,14 +66,15 @@ Camera ResizeCamera(const Camera& camera, int width, int height) {
 
 namespace {
 
-std::vector<View> JobCameras(const RenderJobOptions& options, const VtreeAsset& asset) {
-  if (options.orbit > 0) {
-    OrbitOptions orbit;
-    orbit.frames = options.orbit;
-    orbit.width = options.width > 0 ? options.width : 512;
-    orbit.height = options.height > 0 ? options.height : 512;
-    return OrbitCameras(asset, orbit);
-  }
+OrbitOptions JobOrbit(const RenderJobOptions& options) {
+  OrbitOptions orbit;
+  orbit.frames = options.orbit;
+  orbit.width = options.width > 0 ? options.width : 512;
+  orbit.height = options.height > 0 ? options.height : 512;
+  return orbit;
+}
+
+std::vector<View> ModelCameras(const RenderJobOptions& options) {
   std::vector<View> views = ReadColmapText(options.cameras).Views();
   if (views.empty()) Fail(options.cameras.string(), ": the model has no registered images");
   for (View& view : views) {
@@ -77,40 +84,130 @@ std::vector<View> JobCameras(const RenderJobOptions& options, const VtreeAsset& 
   return views;
 }
 
+// What the job draws: one asset or a scene, behind one interface.
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual std::vector<View> Orbit(const OrbitOptions& orbit) const = 0;
+  virtual Image8 Render(const View& view, const TreeRenderOptions& options, SceneFrameStats* stats) = 0;
+  virtual GpuMemory GpuBytes() const = 0;
+};
+
+class AssetSource : public FrameSource {
+ public:
+  explicit AssetSource(const std::filesystem::path& path) : asset_(ReadAsset(path)), renderer_(asset_) {}
+  std::vector<View> Orbit(const OrbitOptions& orbit) const override { return OrbitCameras(asset_, orbit); }
+  Image8 Render(const View& view, const TreeRenderOptions& options, SceneFrameStats* stats) override {
+    Image8 image = renderer_.Render(view, options, &stats->trees);
+    stats->instances_drawn = 1, stats->instances_culled = 0, stats->frame_ms = stats->trees.frame_ms;
+    return image;
+  }
+  GpuMemory GpuBytes() const override { return renderer_.GpuBytes(); }
+
+ private:
+  VtreeAsset asset_;
+  TreeRenderer renderer_;
+};
+
+class SceneSource : public FrameSource {
+ public:
+  SceneSource(const Scene& scene, double billboard_scale)
+      : renderer_(scene, ReadSceneAssets(scene)), billboard_scale_(billboard_scale) {}
+  std::vector<View> Orbit(const OrbitOptions& orbit) const override {
+    return SceneOrbitCameras(renderer_.Bounds(billboard_scale_), orbit);
+  }
+  Image8 Render(const View& view, const TreeRenderOptions& options, SceneFrameStats* stats) override {
+    return renderer_.Render(view, {options}, stats);
+  }
+  GpuMemory GpuBytes() const override { return renderer_.GpuBytes(); }
+
+ private:
+  SceneRenderer renderer_;
+  double billboard_scale_;
+};
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 }  // namespace
 
 RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress) {
   options.Check();
-  CheckCanWrite(options.output, options.force);
-  const VtreeAsset asset = ReadAsset(options.asset);
-  const std::vector<View> cameras = JobCameras(options, asset);
-  StagedDirectory staged(options.output, options.force);
+  // Refuse before slow work: existing outputs, a missing ffmpeg, a broken scene.
+  if (!options.output.empty()) CheckCanWrite(options.output, options.force);
+  if (!options.turntable.empty()) {
+    CheckCanWrite(options.turntable, options.force);
+    if (!FindOnPath("ffmpeg"))
+      Fail("render: --turntable needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg)");
+  }
+  std::optional<Scene> scene;
+  if (IsSceneFile(options.asset)) scene = LoadScene(options.asset, {options.asset_folder});
+  const std::vector<View> model_cameras = options.cameras.empty() ? std::vector<View>{} : ModelCameras(options);
+
   GlContext context;
-  TreeRenderer renderer(asset);
+  std::unique_ptr<FrameSource> source;
+  if (scene) {
+    source = std::make_unique<SceneSource>(*scene, options.render.billboard_scale);
+  } else {
+    source = std::make_unique<AssetSource>(options.asset);
+  }
+  const std::vector<View> cameras = options.orbit > 0 ? source->Orbit(JobOrbit(options)) : model_cameras;
+  std::optional<StagedDirectory> staged;
+  if (!options.output.empty()) staged.emplace(options.output, options.force);
+  std::optional<VideoWriter> video;
+  if (!options.turntable.empty()) {
+    VideoOptions video_options;
+    video_options.force = options.force;
+    const auto& bg = options.render.background;
+    if (bg[3] > 0) video_options.background = {bg[0], bg[1], bg[2]};
+    video.emplace(options.turntable, cameras.front().camera.width, cameras.front().camera.height, video_options);
+  }
+
   RenderJobResult result;
   result.renderer = context.renderer();
   nlohmann::json frames = nlohmann::json::array();
+  double drawn = 0, culled = 0;
   for (size_t i = 0; i < cameras.size(); ++i) {
-    FrameStats stats;
-    const Image8 image = renderer.Render(cameras[i], options.render, &stats);
-    WriteImage(staged.path() / cameras[i].name, image);
+    SceneFrameStats frame;
+    const Image8 image = source->Render(cameras[i], options.render, &frame);
+    const FrameStats& stats = frame.trees;
+    if (staged) WriteImage(staged->path() / cameras[i].name, image);
+    if (video) video->AddFrame(image);
     result.frames.push_back(cameras[i].name);
     result.stats.push_back(stats);
-    frames.push_back({{"file", cameras[i].name}, {"cells", stats.cells}, {"billboards", stats.billboards},
-                      {"levels", {stats.min_level, stats.max_level}},
-                      {"views", {stats.views.first, stats.views.second}},
-                      {"weights", {stats.views.first_weight, stats.views.second_weight}}});
+    drawn += double(frame.instances_drawn), culled += double(frame.instances_culled);
+    nlohmann::json record = {{"file", cameras[i].name}, {"cells", stats.cells}, {"billboards", stats.billboards},
+                             {"levels", {stats.min_level, stats.max_level}}};
+    if (scene) {
+      record["instances_drawn"] = frame.instances_drawn;
+      record["instances_culled"] = frame.instances_culled;
+    } else {
+      record["views"] = {stats.views.first, stats.views.second};
+      record["weights"] = {stats.views.first_weight, stats.views.second_weight};
+    }
+    frames.push_back(record);
     if (progress && (i + 1) % 10 == 0) progress->Say("render", Str(i + 1, " of ", cameras.size(), " frames"));
   }
   std::vector<double> ms;
   double billboards = 0;
   for (const FrameStats& s : result.stats) ms.push_back(s.frame_ms), billboards += double(s.billboards);
-  std::sort(ms.begin(), ms.end());
-  result.median_ms = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
-  result.mean_billboards = billboards / double(ms.size());
-  // Timings vary run to run, so they stay out of the folder: its files are deterministic.
-  WriteFileAtomic(staged.path() / "frames.json", nlohmann::json{{"asset", options.asset.string()}, {"frames", frames}}.dump(2) + "\n");
-  staged.Commit();
+  result.median_ms = Median(ms);
+  const double n = double(std::max<size_t>(ms.size(), 1));
+  result.mean_billboards = billboards / n;
+  result.mean_instances_drawn = drawn / n;
+  result.mean_instances_culled = culled / n;
+  result.gpu = source->GpuBytes();
+  if (video) video->Finish();
+  if (staged) {
+    // Timings vary run to run, so they stay out of the folder: its files are deterministic.
+    WriteFileAtomic(staged->path() / "frames.json",
+                    nlohmann::json{{"asset", options.asset.string()}, {"frames", frames}}.dump(2) + "\n");
+    staged->Commit();
+  }
   return result;
 }
 

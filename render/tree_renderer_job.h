@@ -1,5 +1,6 @@
-// `voltree render`: frames of a .vtree asset from an orbit or from a COLMAP camera model,
-// written as straight-alpha RGBA PNGs into a staged output folder, with timing statistics.
+// `voltree render`: frames of a .vtree asset or of a scene (.json, render/scene.h) from an orbit
+// or from a COLMAP camera model, written as straight-alpha RGBA PNGs into a staged output folder
+// and/or as a turntable video (ffmpeg), with timing statistics.
 #pragma once
 
 #include <array>
@@ -14,19 +15,23 @@
 namespace voltree {
 
 struct RenderJobOptions {
-  std::filesystem::path asset;
+  std::filesystem::path asset;       // a .vtree, or a scene .json
+  std::filesystem::path asset_folder;  // scenes: where their assets are looked up (default: the scene's folder)
   int orbit = 0;                     // > 0: that many orbit frames
   std::filesystem::path cameras;     // else: a COLMAP text model; frames named after its images
   int width = 0, height = 0;         // 0: from the cameras (orbit: 512x512)
   TreeRenderOptions render;
-  std::filesystem::path output;
+  std::filesystem::path output;      // frames folder; optional when `turntable` is given
+  std::filesystem::path turntable;   // .mp4 of the orbit frames (30 fps, over the background or grey)
   bool force = false;
   void Check() const;
 };
 
 struct RenderJobResult {
   std::vector<std::string> frames;         // file names inside the output folder
-  std::vector<FrameStats> stats;           // per frame
+  std::vector<FrameStats> stats;           // per frame (a scene's: summed over its instances)
+  double mean_instances_drawn = 1, mean_instances_culled = 0;
+  GpuMemory gpu;                           // buffers and atlases of all assets
   double median_ms = 0;                    // of FrameStats::frame_ms
   double mean_billboards = 0;
   std::string renderer;                    // GL_RENDERER
