@@ -4,6 +4,7 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "apps/eval_table.h"
 #include "apps/option_parsing.h"
 #include "core/error.h"
 #include "pipeline/demo.h"
@@ -14,12 +15,15 @@ void AddDemoCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "demo",
       "Run the whole pipeline on a built-in synthetic tree: photograph it in the studio (true cameras and "
-      "mattes), reconstruct its opacity and billboard textures, compress them into an asset. Writes a "
-      "workspace (default out/demo/) with report/contact_sheet.png, tree.vtree and demo.json (timings, sizes)");
+      "mattes), reconstruct its opacity and billboard textures, compress them into an asset, render an orbit and "
+      "evaluate the asset against the studio's held-out views. Writes a workspace (default out/demo/) with "
+      "tree.vtree, report/index.html (metrics, side-by-side images, plots), report/orbit/, "
+      "report/contact_sheet.png and demo.json (timings per stage, sizes, headline metrics); prints the metrics "
+      "table and the path of report/index.html");
   struct Arguments {
     DemoOptions options;
     std::string output = "out/demo", size = "512x512", up = "y";
-    bool quiet = false;
+    bool no_eval = false, quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   DemoOptions& o = args->options;
@@ -36,6 +40,15 @@ void AddDemoCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--codebook", o.compress.colour_codebook, "Colour codebook size")->capture_default_str();
   command->add_option("--alpha-codebook", o.compress.alpha_codebook, "Alpha codebook size")->capture_default_str();
+  command->add_option("--orbit", o.orbit.frames, "Orbit frames rendered into report/orbit/ (0: none)")
+      ->capture_default_str();
+  command->add_option("--orbit-size", o.orbit.size, "Orbit frame side in pixels (square)")->capture_default_str();
+  command->add_flag("--no-eval", args->no_eval, "Skip the evaluation report (default: evaluate)");
+  command->add_flag("--colmap", o.colmap,
+                    "Calibrate the photos with COLMAP (SIFT on the CPU, about a minute) instead of using the studio's "
+                    "true cameras; the true input cameras are kept in truth/input_sparse/ and the held-out cameras "
+                    "are moved into COLMAP's frame by the similarity fitted between the two, so the evaluation "
+                    "includes calibration error (default: true cameras)");
   command->add_flag("--force", o.force, "Replace an output folder that is not a previous demo's");
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {
@@ -45,9 +58,14 @@ void AddDemoCommand(CLI::App& app) {
     const std::optional<UpAxis> up = UpAxisFromName(args->up);
     if (!up) Fail("--up '", args->up, "': expected y or z");
     options.tree.up = *up;
+    options.evaluate = !args->no_eval;
     Progress progress(args->quiet);
-    const std::filesystem::path summary = RunDemo(options, progress);
-    std::printf("%s\n", summary.string().c_str());
+    const DemoResult result = RunDemo(options, progress);
+    std::printf("%s (%.1f s)\n", result.summary.string().c_str(), result.seconds);
+    if (!result.index_html.empty()) {
+      std::printf("%s", EvaluationTable(result.evaluation).c_str());
+      std::printf("%s\n", result.index_html.string().c_str());
+    }
   });
 }
 

@@ -14,5 +14,7 @@ void AddReconstructCommand(CLI::App& app);
 void AddCompressCommand(CLI::App& app);
 void AddInfoCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
+void AddEvalCommand(CLI::App& app);
+void AddRunCommand(CLI::App& app);
 
 }  // namespace voltree::app

@@ -7,7 +7,8 @@
 int main(int argc, char** argv) {
   CLI::App app{
       "voltree captures real trees from photographs as compact volumetric assets and renders them.\n"
-      "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render.\n"
+      "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render -> eval;\n"
+      "'voltree run DIR' chains them on a workspace of photos.\n"
       "Run 'voltree COMMAND --help' for the options of a command."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "voltree 0.1.0");
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
   voltree::app::AddCompressCommand(app);
   voltree::app::AddInfoCommand(app);
   voltree::app::AddRenderCommand(app);
+  voltree::app::AddEvalCommand(app);
+  voltree::app::AddRunCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

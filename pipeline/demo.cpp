@@ -1,5 +1,6 @@
 #include "pipeline/demo.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "compress/compress_workspace.h"
@@ -26,21 +27,47 @@ void WriteContactSheet(const fs::path& workspace) {
   WriteImage(workspace / "report" / "contact_sheet.png", MakeContactSheet(images));
 }
 
+// The headline numbers of one view set (auto LOD), for demo.json.
+nlohmann::json Headline(const MetricsReport& report) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, summary] : report.Summaries())
+    out[name] = std::isfinite(summary.mean) ? nlohmann::json(summary.mean) : nlohmann::json(nullptr);
+  if (!report.views.empty()) out["views"] = report.views.size();
+  return out;
+}
+
 }  // namespace
+
+OrbitFramesOptions DemoOptions::DefaultOrbit() {
+  OrbitFramesOptions orbit;
+  orbit.frames = 24;
+  orbit.size = 512;
+  return orbit;
+}
+
+CalibrateOptions DemoOptions::DefaultCalibrate() {
+  CalibrateOptions calibrate;
+  calibrate.max_features = 2048;
+  return calibrate;
+}
 
 void DemoOptions::Check() const {
   if (output.empty()) Fail("demo: the output folder is empty");
   studio.Check();
   reconstruct.Check();
   compress.Check();
+  if (orbit.frames > 0) orbit.Check();
+  if (colmap) calibrate.Check();
 }
 
-fs::path RunDemo(const DemoOptions& options, Progress& progress) {
+DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   options.Check();
   const bool previous_demo = fs::exists(options.output / kMarker);
   StagedDirectory stage(options.output, options.force || previous_demo);
   const fs::path workspace = stage.path();
-  nlohmann::json summary = {{"tree", TreeSourceName(options.tree)}, {"seed", options.tree.seed}};
+  nlohmann::json summary = {{"tree", TreeSourceName(options.tree)},
+                            {"seed", options.tree.seed},
+                            {"cameras", options.colmap ? "colmap" : "true (studio)"}};
   auto timed = [&](const char* name, auto&& work) {
     const double start = progress.ElapsedSeconds();
     work();
@@ -56,20 +83,66 @@ fs::path RunDemo(const DemoOptions& options, Progress& progress) {
     PhotographTree(mesh, studio, workspace, progress, /*force=*/true);  // into the empty staging folder
     WriteContactSheet(workspace);
   });
+  if (options.colmap) {
+    timed("calibrate", [&] {
+      // The true cameras stay as truth; COLMAP's take their place in sparse/.
+      fs::rename(workspace / "sparse", workspace / "truth" / "input_sparse");
+      const CalibrateReport report = Calibrate(workspace, options.calibrate, progress);
+      summary["calibration"] = {{"registered", report.registered},
+                                {"images", report.images},
+                                {"mean_reprojection_error_px", report.mean_reprojection_error}};
+    });
+  }
   timed("reconstruct", [&] { ReconstructWorkspace(workspace, options.reconstruct, false, &progress); });
   CompressStats compress_stats;
   timed("compress", [&] {
     CompressWorkspace(workspace, options.compress, {}, &progress, &compress_stats);
   });
+  if (options.orbit.frames > 0)
+    timed("orbit", [&] {
+      const RenderJobResult orbit = RenderOrbitFrames(workspace / "tree.vtree", workspace / "report" / "orbit",
+                                                      options.orbit, progress);
+      summary["orbit"] = {{"frames", orbit.frames.size()},
+                          {"size", options.orbit.size},
+                          {"median_ms_per_frame", orbit.median_ms},
+                          {"renderer", orbit.renderer}};
+    });
+  DemoResult result;
+  if (options.evaluate)
+    timed("eval", [&] {
+      EvaluateOptions evaluation = options.evaluation;
+      evaluation.workspace = workspace;
+      evaluation.asset.clear();
+      evaluation.report.clear();
+      evaluation.workspace_label = options.output.string();
+      const EvaluateResult evaluated = EvaluateWorkspace(evaluation, progress);
+      summary["evaluation"] = {{"held_out", Headline(evaluated.table.Overall(ViewSet::kHeldOut))},
+                               {"input", Headline(evaluated.table.Overall(ViewSet::kInput))},
+                               {"render_seconds", evaluated.render_seconds},
+                               {"report", "report/index.html"}};
+      if (evaluated.alignment)
+        summary["evaluation"]["truth_alignment"] = {
+            {"mean_rotation_degrees", evaluated.alignment->mean_rotation_degrees},
+            {"mean_center_error", evaluated.alignment->mean_center_error}};
+      result.evaluation = evaluated.table;
+      result.index_html = options.output / "report" / "index.html";
+    });
+  double total = 0;
+  for (const auto& [stage_name, seconds] : summary["seconds"].items()) total += seconds.get<double>();
+  summary["seconds"]["total"] = total;
   summary["texture_psnr_db"] = {{"vq", compress_stats.psnr_vq}, {"dxt5", compress_stats.psnr_dxt5}};
   summary["asset_bytes"] = fs::file_size(workspace / "tree.vtree");
-  summary["options"] = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", options.compress.ToJson()}};
+  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", options.compress.ToJson()}};
+  used["orbit"] = {{"frames", options.orbit.frames}, {"size", options.orbit.size}};
+  used["evaluate"] = options.evaluate;
+  summary["options"] = used;
   WriteFileAtomic(workspace / kMarker, summary.dump(2) + "\n");
   stage.Commit();
-  progress.Say("demo", Str("done: ", options.output.string(), " (contact sheet: ",
-                           (options.output / "report" / "contact_sheet.png").string(), ", asset: ",
+  progress.Say("demo", Str("done in ", total, " s: ", options.output.string(), " (asset ",
                            (options.output / "tree.vtree").string(), ")"));
-  return options.output / kMarker;
+  result.summary = options.output / kMarker;
+  result.seconds = total;
+  return result;
 }
 
 }  // namespace voltree

@@ -1,11 +1,15 @@
 // The one-command demo: a synthetic tree photographed in the studio, reconstructed and compressed
-// into an asset, with a contact sheet of the photos and a summary of every stage.
+// into an asset, rendered on an orbit and evaluated against the studio's held-out truth, with a
+// contact sheet of the photos and a summary of every stage.
 #pragma once
 
 #include <filesystem>
 
+#include "capture/calibrate.h"
 #include "compress/compress_volume.h"
 #include "core/progress.h"
+#include "pipeline/evaluate.h"
+#include "pipeline/orbit_frames.h"
 #include "reconstruct/reconstruct.h"
 #include "samples/studio_options.h"
 #include "samples/tree_source.h"
@@ -18,16 +22,35 @@ struct DemoOptions {
   StudioOptions studio;            // default: 24 views on 2 rings + 8 held out, 512x512
   ReconstructOptions reconstruct;  // default: 7 octree levels, 4x4 texels
   CompressOptions compress;        // default: 512 colour and 512 alpha codewords, CIELab, modified GLA
+  OrbitFramesOptions orbit = DefaultOrbit();  // 24 frames at 512x512 into report/orbit/; frames 0: none
+  bool evaluate = true;            // report/metrics.json and report/index.html
+  EvaluateOptions evaluation;      // its workspace, report and label are set by RunDemo
+  // Calibrate with COLMAP instead of using the studio's true cameras. The true input cameras are
+  // kept in truth/input_sparse/, and the evaluation moves the held-out cameras into COLMAP's
+  // (normalized) frame with the similarity that best maps the true input cameras onto COLMAP's.
+  bool colmap = false;
+  CalibrateOptions calibrate = DefaultCalibrate();
   // Replace an output folder that is not a previous demo's. A previous demo's folder (it holds
   // demo.json) is replaced without asking, so the README's command can be run again.
   bool force = false;
   void Check() const;
+
+  static OrbitFramesOptions DefaultOrbit();
+  // COLMAP settings for the studio's 512x512 photos: 2048 features keep matching to seconds.
+  static CalibrateOptions DefaultCalibrate();
 };
 
 // Writes the workspace at options.output atomically (built aside, renamed at the end):
-// images/ mattes/ foreground/ sparse/ truth/ scene.json (studio), volume/ (reconstruct),
-// tree.vtree (compress), report/contact_sheet.png, demo.json (options, timings, sizes).
-// Returns the path of demo.json.
-std::filesystem::path RunDemo(const DemoOptions& options, Progress& progress);
+// images/ mattes/ foreground/ sparse/ truth/ scene.json (studio; with colmap also colmap/ and
+// truth/input_sparse/), volume/ (reconstruct), tree.vtree (compress), report/contact_sheet.png,
+// report/orbit/ (renders), report/metrics.json + index.html + eval/ (evaluation), demo.json
+// (options, timings per stage, sizes, headline metrics).
+struct DemoResult {
+  std::filesystem::path summary;     // demo.json
+  std::filesystem::path index_html;  // empty without evaluation
+  LevelMetricsTable evaluation;      // empty without evaluation
+  double seconds = 0;                // all stages
+};
+DemoResult RunDemo(const DemoOptions& options, Progress& progress);
 
 }  // namespace voltree

@@ -1,0 +1,79 @@
+// voltree run DIR: matte, calibrate (each only when missing), reconstruct, compress, orbit renders
+// and evaluation on a user's capture workspace.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "apps/commands.h"
+#include "apps/eval_table.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "pipeline/run_workspace.h"
+
+namespace voltree::app {
+
+void AddRunCommand(CLI::App& app) {
+  auto* command = app.add_subcommand(
+      "run",
+      "The whole pipeline on a capture workspace DIR holding images/ (your photos of one tree) and optionally "
+      "mattes/ and sparse/: matte (only when mattes/ is missing), calibrate with COLMAP (only when sparse/ is "
+      "missing), reconstruct (DIR/volume/), compress (DIR/tree.vtree), orbit renders (DIR/report/orbit/) and "
+      "eval (DIR/report/index.html: held-out views when DIR/truth/ exists, else the input views only, which "
+      "measures self-consistency). Prints each stage's time and the evaluation table");
+  struct Arguments {
+    std::string dir, refine = "infoflow", camera_model = "SIMPLE_RADIAL", matcher = "exhaustive", eval_levels = "all";
+    RunOptions options;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Arguments>();
+  RunOptions& o = args->options;
+  command->add_option("DIR", args->dir, "Capture workspace with images/ (and optionally mattes/, sparse/, truth/)")
+      ->required();
+  command->add_option("--refine", args->refine, "Matting when mattes/ is missing: infoflow, guided or none")
+      ->capture_default_str();
+  command->add_option("--camera-model", args->camera_model,
+                      "COLMAP camera model when sparse/ is missing: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, "
+                      "OPENCV")
+      ->capture_default_str();
+  command->add_option("--max-image-size", o.calibrate.max_image_size,
+                      "COLMAP feature extraction: longest side in pixels")
+      ->capture_default_str();
+  command->add_option("--matcher", args->matcher, "COLMAP matcher: exhaustive, or sequential for photos in a walk")
+      ->capture_default_str();
+  command->add_option("--levels", o.reconstruct.levels, "Octree levels (level L has 2^L cells per axis)")
+      ->capture_default_str();
+  command->add_option("--codebook", o.compress.colour_codebook, "Colour codebook size")->capture_default_str();
+  command->add_option("--alpha-codebook", o.compress.alpha_codebook, "Alpha codebook size")->capture_default_str();
+  command->add_option("--orbit", o.orbit.frames, "Orbit frames rendered into DIR/report/orbit/")->capture_default_str();
+  command->add_option("--orbit-size", o.orbit.size, "Orbit frame side in pixels (square)")->capture_default_str();
+  command->add_option("--eval-levels", args->eval_levels,
+                      "all: evaluate the renderer's LOD and each octree level forced; auto: only the LOD (faster on "
+                      "large photos)")
+      ->capture_default_str();
+  command->add_flag("--force", o.force,
+                    "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: "
+                    "refuse); existing mattes/ and sparse/ are always kept");
+  command->add_flag("--quiet", args->quiet, "No progress lines");
+  command->callback([args] {
+    RunOptions options = args->options;
+    options.workspace = args->dir;
+    options.matte.matte.refine = ParseRefineMethod(args->refine);
+    options.calibrate.camera_model = args->camera_model;
+    options.calibrate.matcher = args->matcher;
+    if (args->eval_levels != "all" && args->eval_levels != "auto")
+      Fail("--eval-levels '", args->eval_levels, "': expected all or auto");
+    options.evaluate.each_level = args->eval_levels == "all";
+    Progress progress(args->quiet);
+    const RunResult result = RunWorkspace(options, progress);
+    std::printf("%-12s %9s\n", "stage", "seconds");
+    for (const StageTime& stage : result.stages) {
+      if (stage.what == "ran") std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
+      else std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
+    }
+    std::printf("%s", EvaluationTable(result.evaluation.table).c_str());
+    for (const std::string& note : result.evaluation.notes) std::printf("note: %s\n", note.c_str());
+    std::printf("%s\n", result.evaluation.index_html.string().c_str());
+  });
+}
+
+}  // namespace voltree::app

@@ -1,0 +1,27 @@
+#include "pipeline/orbit_frames.h"
+
+#include "core/error.h"
+
+namespace voltree {
+
+void OrbitFramesOptions::Check() const {
+  if (frames < 1) Fail("orbit: frames = ", frames, ", expected >= 1");
+  if (size < 16 || size > 8192) Fail("orbit: size = ", size, ", expected 16..8192 pixels");
+}
+
+RenderJobResult RenderOrbitFrames(const std::filesystem::path& asset, const std::filesystem::path& folder,
+                                  const OrbitFramesOptions& options, Progress& progress) {
+  options.Check();
+  RenderJobOptions job;
+  job.asset = asset;
+  job.orbit = options.frames;
+  job.width = job.height = options.size;
+  job.output = folder;
+  job.force = options.force;
+  const RenderJobResult result = RunRenderJob(job, &progress);
+  progress.Say("orbit", Str(result.frames.size(), " frames at ", options.size, "x", options.size, " -> ",
+                            folder.string(), ", median ", result.median_ms, " ms per frame"));
+  return result;
+}
+
+}  // namespace voltree

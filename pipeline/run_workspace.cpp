@@ -1,0 +1,107 @@
+#include "pipeline/run_workspace.h"
+
+#include "compress/compress_workspace.h"
+#include "core/error.h"
+#include "core/files.h"
+#include "pipeline/report_folder.h"
+#include "reconstruct/workspace.h"
+
+namespace voltree {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool NeedsMattes(const fs::path& dir) { return !fs::is_directory(dir / "mattes"); }
+bool NeedsCameras(const fs::path& dir) { return !fs::is_directory(dir / "sparse"); }
+
+}  // namespace
+
+void RunOptions::Check() const {
+  if (workspace.empty()) Fail("run: the workspace folder is empty");
+  matte.Check();
+  calibrate.Check();
+  reconstruct.Check();
+  compress.Check();
+  orbit.Check();
+}
+
+void CheckRunWorkspace(const RunOptions& options) {
+  options.Check();
+  const fs::path& dir = options.workspace;
+  if (!fs::is_directory(dir)) Fail(dir.string(), ": no such workspace folder");
+  if (NeedsMattes(dir) || NeedsCameras(dir)) {
+    const fs::path images = dir / "images";
+    const std::string why = NeedsMattes(dir) && NeedsCameras(dir) ? "mattes/ and sparse/ are missing"
+                            : NeedsMattes(dir)                   ? "mattes/ is missing"
+                                                                 : "sparse/ is missing";
+    if (!fs::is_directory(images))
+      Fail(images.string(), ": missing; ", why, ", so the photos of the tree are needed (PNG, JPEG, TIFF or BMP)");
+    if (ListImages(images).empty()) Fail(images.string(), ": no photos (png, jpg, tif, bmp); ", why);
+  }
+  if (!NeedsMattes(dir) && !NeedsCameras(dir) && !fs::is_directory(dir / "images") &&
+      !fs::is_directory(dir / "foreground"))
+    Fail(dir.string(), ": neither images/ nor foreground/: reconstruct needs the colours of the photos");
+  if (NeedsMattes(dir) && fs::exists(dir / "foreground") && !options.force)
+    Fail((dir / "foreground").string(), ": exists but mattes/ does not; pass --force to compute both again");
+  CheckCanReplaceFolder(dir / "volume", options.force);
+  CheckCanWrite(dir / "tree.vtree", options.force);
+  const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
+  CheckCanReplaceFolder(report / "orbit", options.force);
+  CheckCanWriteReport(report, options.force || options.evaluate.force);
+}
+
+RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
+  CheckRunWorkspace(options);
+  const fs::path& dir = options.workspace;
+  RunResult result;
+  auto stage = [&](const char* name, bool needed, const std::string& skipped, auto&& work) {
+    if (!needed) {
+      result.stages.push_back({name, 0, skipped});
+      progress.Say(name, "skipped: " + skipped);
+      return;
+    }
+    const double start = progress.ElapsedSeconds();
+    progress.Say(name, "start");
+    work();
+    const double seconds = progress.ElapsedSeconds() - start;
+    result.stages.push_back({name, seconds, "ran"});
+    progress.Say(name, Str("done in ", seconds, " s"));
+  };
+
+  stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
+    MatteWorkspaceOptions matte = options.matte;
+    matte.force = matte.force || options.force;
+    MatteWorkspace(dir, matte, progress);
+  });
+  stage("calibrate", NeedsCameras(dir), "sparse/ exists", [&] {
+    CalibrateOptions calibrate = options.calibrate;
+    calibrate.force = calibrate.force || options.force;
+    const CalibrateReport report = Calibrate(dir, calibrate, progress);
+    progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
+                                  report.mean_reprojection_error, " px"));
+  });
+  stage("reconstruct", true, "", [&] { ReconstructWorkspace(dir, options.reconstruct, options.force, &progress); });
+  stage("compress", true, "", [&] {
+    CompressWorkspaceOptions workspace_options;
+    workspace_options.force = options.force;
+    result.asset = CompressWorkspace(dir, options.compress, workspace_options, &progress);
+  });
+  const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
+  stage("orbit", true, "", [&] {
+    OrbitFramesOptions orbit = options.orbit;
+    orbit.force = orbit.force || options.force;
+    fs::create_directories(report);
+    RenderOrbitFrames(result.asset, report / "orbit", orbit, progress);
+  });
+  stage("eval", true, "", [&] {
+    EvaluateOptions evaluate = options.evaluate;
+    evaluate.workspace = dir;
+    evaluate.asset = result.asset;
+    evaluate.report = report;
+    evaluate.force = evaluate.force || options.force;
+    result.evaluation = EvaluateWorkspace(evaluate, progress);
+  });
+  return result;
+}
+
+}  // namespace voltree

@@ -1,0 +1,59 @@
+// `voltree run DIR`: the whole pipeline on a user's capture workspace, each stage only as needed:
+//   matte        when DIR/mattes/ is missing (capture/matte_workspace.h)
+//   calibrate    when DIR/sparse/ is missing: COLMAP, then the tree frame (capture/calibrate.h)
+//   reconstruct  DIR/volume/ (reconstruct/workspace.h)
+//   compress     DIR/tree.vtree (compress/compress_workspace.h)
+//   orbit        DIR/report/orbit/frame_NNN.png (render job)
+//   eval         DIR/report/{metrics.json,index.html,eval/}: held-out views when DIR/truth/
+//                exists, always the input views (self-consistency)
+// Mattes come first: calibration bounds the tree with their visual hull.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "capture/calibrate.h"
+#include "capture/matte_workspace.h"
+#include "compress/compress_volume.h"
+#include "core/progress.h"
+#include "pipeline/evaluate.h"
+#include "pipeline/orbit_frames.h"
+#include "reconstruct/reconstruct.h"
+
+namespace voltree {
+
+struct RunOptions {
+  std::filesystem::path workspace;
+  MatteWorkspaceOptions matte;      // used when mattes/ is missing
+  CalibrateOptions calibrate;       // used when sparse/ is missing
+  ReconstructOptions reconstruct;
+  CompressOptions compress;
+  OrbitFramesOptions orbit;         // default 36 frames at 512x512
+  EvaluateOptions evaluate;         // its workspace is set by RunWorkspace
+  // Replace what earlier runs left: volume/, tree.vtree, report/orbit/, and report files that
+  // eval did not write. Mattes and cameras that exist are always kept (delete them to redo them).
+  bool force = false;
+  void Check() const;
+};
+
+struct StageTime {
+  std::string stage;
+  double seconds = 0;
+  std::string what;  // "ran", or why it was skipped
+};
+
+struct RunResult {
+  std::vector<StageTime> stages;
+  std::filesystem::path asset;
+  EvaluateResult evaluation;
+};
+
+// Which stages would run and what is missing; throws Error naming the folder and what it lacks
+// (no images/, no photos in it, outputs that exist without force) before any slow work.
+void CheckRunWorkspace(const RunOptions& options);
+
+RunResult RunWorkspace(const RunOptions& options, Progress& progress);
+
+}  // namespace voltree
