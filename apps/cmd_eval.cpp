@@ -1,12 +1,10 @@
 // voltree eval DIR: render the asset at the held-out truth cameras and at the input cameras,
 // compare, and write DIR/report/{metrics.json,index.html,eval/}.
-#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "apps/commands.h"
 #include "apps/eval_table.h"
-#include "core/error.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"
 
@@ -58,16 +56,13 @@ void AddEvalCommand(CLI::App& app) {
     options.report = args->report;
     options.codebook_sweep = args->codebook_sweep;
     options.scene_bench = args->scene_bench;
-    if (args->levels != "all" && args->levels != "auto") Fail("--levels '", args->levels, "': expected all or auto");
-    options.each_level = args->levels == "all";
+    options.each_level = EachLevelFromName(args->levels, "--levels");
     options.input_views = !args->no_input;
     options.images = !args->no_images;
     options.plots = !args->no_plots;
     Progress progress(args->quiet);
     const EvaluateResult result = EvaluateWorkspace(options, progress);
-    std::printf("%s", EvaluationTable(result.table).c_str());
-    for (const std::string& note : result.notes) std::printf("note: %s\n", note.c_str());
-    std::printf("%s\n", result.index_html.string().c_str());
+    PrintEvaluation(result);
   });
 }
 

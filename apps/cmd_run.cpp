@@ -6,7 +6,6 @@
 
 #include "apps/commands.h"
 #include "apps/eval_table.h"
-#include "core/error.h"
 #include "core/progress.h"
 #include "pipeline/run_workspace.h"
 
@@ -60,9 +59,7 @@ void AddRunCommand(CLI::App& app) {
     options.matte.matte.refine = ParseRefineMethod(args->refine);
     options.calibrate.camera_model = args->camera_model;
     options.calibrate.matcher = args->matcher;
-    if (args->eval_levels != "all" && args->eval_levels != "auto")
-      Fail("--eval-levels '", args->eval_levels, "': expected all or auto");
-    options.evaluate.each_level = args->eval_levels == "all";
+    options.evaluate.each_level = EachLevelFromName(args->eval_levels, "--eval-levels");
     Progress progress(args->quiet);
     const RunResult result = RunWorkspace(options, progress);
     std::printf("%-12s %9s\n", "stage", "seconds");
@@ -70,9 +67,7 @@ void AddRunCommand(CLI::App& app) {
       if (stage.what == "ran") std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
       else std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
     }
-    std::printf("%s", EvaluationTable(result.evaluation.table).c_str());
-    for (const std::string& note : result.evaluation.notes) std::printf("note: %s\n", note.c_str());
-    std::printf("%s\n", result.evaluation.index_html.string().c_str());
+    PrintEvaluation(result.evaluation);
   });
 }
 

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "core/error.h"
+
 namespace voltree::app {
 
 std::string EvaluationTable(const LevelMetricsTable& table) {
@@ -21,6 +23,17 @@ std::string EvaluationTable(const LevelMetricsTable& table) {
     out += line;
   }
   return out;
+}
+
+void PrintEvaluation(const EvaluateResult& result) {
+  std::printf("%s", EvaluationTable(result.table).c_str());
+  for (const std::string& note : result.notes) std::printf("note: %s\n", note.c_str());
+  std::printf("%s\n", result.index_html.string().c_str());
+}
+
+bool EachLevelFromName(const std::string& value, const char* option) {
+  if (value != "all" && value != "auto") Fail(option, " '", value, "': expected all or auto");
+  return value == "all";
 }
 
 }  // namespace voltree::app

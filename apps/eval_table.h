@@ -3,11 +3,19 @@
 
 #include <string>
 
+#include "pipeline/evaluate.h"
 #include "pipeline/evaluation_levels.h"
 
 namespace voltree::app {
 
 // Held-out and input rows (auto LOD, means over the views): RGB PSNR, SSIM, alpha PSNR, P, R, RMS.
 std::string EvaluationTable(const LevelMetricsTable& table);
+
+// The table, eval's notes and the path of the report page, on stdout.
+void PrintEvaluation(const EvaluateResult& result);
+
+// The value of an option choosing which levels eval renders: "all" (the LOD and every octree level
+// forced) -> true, "auto" (the LOD only) -> false; anything else fails naming `option`.
+bool EachLevelFromName(const std::string& value, const char* option);
 
 }  // namespace voltree::app

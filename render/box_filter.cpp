@@ -6,13 +6,6 @@
 namespace voltree {
 namespace {
 
-constexpr const char* kVertex = R"(#version 430 core
-void main() {
-  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 constexpr const char* kFragment = R"(#version 430 core
 uniform sampler2D uSource;
 uniform int uFactor;
@@ -28,7 +21,8 @@ void main() {
 
 }  // namespace
 
-BoxDownsampler::BoxDownsampler() : program_(ShaderProgram::Graphics("box filter", kVertex, kFragment)) {
+BoxDownsampler::BoxDownsampler()
+    : program_(ShaderProgram::Graphics("box filter", kFullScreenTriangleVertexShader, kFragment)) {
   program_.Set("uSource", 0);
 }
 

@@ -27,6 +27,19 @@ void FlipRows(Image<T>& image) {
                      image.pixels.begin() + (image.height - 1 - y) * row);
 }
 
+// RGBA rows of the colour attachment, top row first (GL reads bottom-up).
+template <typename T>
+Image<T> ReadBack(GLuint framebuffer, int width, int height, GLenum type) {
+  Image<T> image(width, height, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, sizeof(T) == 1 ? 1 : 4);
+  glReadPixels(0, 0, width, height, GL_RGBA, type, image.pixels.data());
+  CheckGl("reading back a framebuffer");
+  FlipRows(image);
+  return image;
+}
+
 }  // namespace
 
 Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_depth)
@@ -69,26 +82,8 @@ void Framebuffer::Clear(float r, float g, float b, float a, float depth) const {
   if (depth_ != 0) glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &depth);
 }
 
-Image8 Framebuffer::ReadImage8() const {
-  Image8 image(width_, height_, 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-  CheckGl("reading back a framebuffer");
-  FlipRows(image);
-  return image;
-}
+Image8 Framebuffer::ReadImage8() const { return ReadBack<uint8_t>(framebuffer_, width_, height_, GL_UNSIGNED_BYTE); }
 
-ImageF Framebuffer::ReadImageF() const {
-  ImageF image(width_, height_, 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, image.pixels.data());
-  CheckGl("reading back a framebuffer");
-  FlipRows(image);
-  return image;
-}
+ImageF Framebuffer::ReadImageF() const { return ReadBack<float>(framebuffer_, width_, height_, GL_FLOAT); }
 
 }  // namespace voltree

@@ -9,6 +9,13 @@
 #include "core/error.h"
 
 namespace voltree {
+
+const char* const kFullScreenTriangleVertexShader = R"(#version 430 core
+void main() {
+  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
 namespace {
 
 std::vector<std::string> SplitLines(std::string_view text) {

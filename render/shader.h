@@ -42,6 +42,10 @@ class ShaderProgram {
   GLuint program_ = 0;
 };
 
+// A complete vertex shader (#version 430 core) drawing one triangle that covers the viewport:
+// glDrawArrays(GL_TRIANGLES, 0, 3) with no vertex buffer; fragment shaders use gl_FragCoord.
+extern const char* const kFullScreenTriangleVertexShader;
+
 // "  12 | vec3 x = ;" lines of `source` around each line that the driver's `log` names
 // (Mesa "0:12(5): error", NVIDIA "0(12) : error"); exposed for tests.
 std::string QuoteShaderLines(std::string_view source, std::string_view log);

@@ -8,14 +8,6 @@
 namespace voltree {
 namespace {
 
-constexpr const char* kVertex = R"(#version 430 core
-void main() {
-  // One triangle covering the viewport.
-  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
 constexpr const char* kFragmentMain = R"(
 out vec4 outColor;
 uniform float uSupersample;
@@ -145,7 +137,7 @@ void main() {
 }  // namespace
 
 StudioBackdrop::StudioBackdrop(uint64_t seed, double scene_size) : seed_(seed), scene_size_(scene_size) {
-  program_ = ShaderProgram::Graphics("studio backdrop", kVertex,
+  program_ = ShaderProgram::Graphics("studio backdrop", kFullScreenTriangleVertexShader,
                                      std::string("#version 430 core\n") + kStudioProjectionGlsl + kFragmentMain);
 }
 

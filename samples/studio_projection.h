@@ -15,7 +15,7 @@ namespace voltree {
 //                                      coordinates (times the supersampling of the viewport)
 //   vec3 PixelRay(vec2 pixel)       -- unit world direction through a pixel position
 //   vec3 CameraCenter()
-extern const char* const kStudioProjectionGlsl;
+extern const std::string kStudioProjectionGlsl;
 
 // Sets the uniforms of kStudioProjectionGlsl for `view`; depth maps [near, far] to [-1, 1].
 void SetStudioCamera(const ShaderProgram& program, const View& view, double near, double far);

@@ -4,17 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "samples/smoothstep.h"
 #include "samples/tree_textures.h"
 
 namespace voltree {
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-
-float Smoothstep(float lo, float hi, float x) {
-  const float t = std::clamp((x - lo) / (hi - lo), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
 
 Eigen::Vector3f NodeTangent(const Branch& branch, size_t i) {
   const size_t last = branch.nodes.size() - 1;

@@ -9,17 +9,13 @@
 
 #include <tbb/parallel_for.h>
 
+#include "samples/smoothstep.h"
 #include "samples/tree_random.h"
 
 namespace voltree {
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-
-float Smoothstep(float lo, float hi, float x) {
-  const float t = std::clamp((x - lo) / (hi - lo), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
 
 int Wrap(int i, int period) { return ((i % period) + period) % period; }
 

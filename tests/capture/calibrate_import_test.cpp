@@ -11,28 +11,13 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "capture/box_matte.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-Image8 BoxMatte(const View& view) {
-  Image8 matte(view.camera.width, view.camera.height, 1);
-  const Eigen::Vector3d low(-0.2, -0.2, 0), high(0.2, 0.2, 1), origin = view.pose.Center();
-  for (int y = 0; y < matte.height; ++y)
-    for (int x = 0; x < matte.width; ++x) {
-      const Eigen::Vector3d d = view.PixelRay({x + 0.5, y + 0.5});
-      double near = 0, far = 1e9;
-      for (int k = 0; k < 3; ++k) {
-        double a = (low[k] - origin[k]) / d[k], b = (high[k] - origin[k]) / d[k];
-        if (a > b) std::swap(a, b);
-        near = std::max(near, a);
-        far = std::min(far, b);
-      }
-      matte.at(x, y) = near <= far ? 255 : 0;
-    }
-  return matte;
-}
+using test::BoxMatte;
 
 // A workspace with photos and mattes, and the same cameras in an arbitrary COLMAP-like frame.
 fs::path MakeWorkspace(const std::string& name, ColmapModel* arbitrary) {

@@ -10,9 +10,12 @@
 #include "capture/calibrate_accuracy.h"
 #include "capture/normalize_hull.h"
 #include "core/error.h"
+#include "capture/box_matte.h"
 
 namespace voltree {
 namespace {
+
+using test::BoxMatte;
 
 // 12 cameras on an orbit of radius 4 at height 1.5 around a tree 1 high, in a Z-up world.
 std::vector<View> Orbit(int count = 12, double jitter_height = 0, double low_ring = 1.5) {
@@ -74,25 +77,6 @@ TEST(Normalize, UpFromAnOrbitUnderAnyRotation) {
 
 TEST(Normalize, LookAtPointIsWhereTheOrbitLooks) {
   EXPECT_LT((LookAtPoint(Orbit()) - Eigen::Vector3d(0, 0, 0.5)).norm(), 1e-9);
-}
-
-// Analytic mattes of a box [-0.2, 0.2]^2 x [0, 1]: 255 where the pixel's ray hits it.
-Image8 BoxMatte(const View& view) {
-  Image8 matte(view.camera.width, view.camera.height, 1);
-  const Eigen::Vector3d low(-0.2, -0.2, 0), high(0.2, 0.2, 1), origin = view.pose.Center();
-  for (int y = 0; y < matte.height; ++y)
-    for (int x = 0; x < matte.width; ++x) {
-      const Eigen::Vector3d d = view.PixelRay({x + 0.5, y + 0.5});
-      double near = 0, far = 1e9;
-      for (int k = 0; k < 3; ++k) {
-        double a = (low[k] - origin[k]) / d[k], b = (high[k] - origin[k]) / d[k];
-        if (a > b) std::swap(a, b);
-        near = std::max(near, a);
-        far = std::min(far, b);
-      }
-      matte.at(x, y) = near <= far ? 255 : 0;
-    }
-  return matte;
 }
 
 // Two rings: cameras that all look down steeply cannot carve below the base (the region under the

@@ -6,25 +6,12 @@
 #include "core/error.h"
 #include "render/lod.h"
 #include "render/traversal.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
 
-VtreeAsset Full(int levels) {
-  VtreeAsset asset;
-  asset.origin = Eigen::Vector3d(-1, -1, 0);
-  asset.size = 2;
-  asset.texels = 4;
-  for (int l = 0; l < levels; ++l) {
-    VtreeLevel level;
-    level.resolution = 1u << l;
-    for (uint16_t x = 0; x < level.resolution; ++x)
-      for (uint16_t y = 0; y < level.resolution; ++y)
-        for (uint16_t z = 0; z < level.resolution; ++z) level.cells.push_back({x, y, z});
-    asset.levels.push_back(level);
-  }
-  return asset;
-}
+using test::FullOctree;
 
 LodOptions Planes() {
   LodOptions lod;
@@ -59,7 +46,7 @@ TEST(LodPlanes, NamesAndPlaneDepths) {
 // A dolly out along the view direction (from outside the tree): no finest cell ever gets a finer
 // level, and the sweep spans finest to root.
 TEST(LodPlanes, LevelNeverIncreasesWithDistance) {
-  const VtreeAsset asset = Full(5);
+  const VtreeAsset asset = FullOctree(5);
   const OctreeIndex index(asset);
   const Eigen::Vector3d target(0, 0, 1);
   const Eigen::Vector3d direction = Eigen::Vector3d(-0.8, -0.3, -0.4).normalized();  // eye -> tree
@@ -83,7 +70,7 @@ TEST(LodPlanes, LevelNeverIncreasesWithDistance) {
 // Depth along the axis is never more than the Euclidean distance, so planes are at least as fine
 // as the screen rule everywhere, and strictly finer for some off-axis cells of a wide view.
 TEST(LodPlanes, AtLeastAsFineAsScreenAndFinerOffAxis) {
-  const VtreeAsset asset = Full(5);
+  const VtreeAsset asset = FullOctree(5);
   const OctreeIndex index(asset);
   const Eigen::Vector3d eye(0, -30, 1), direction(0.6, 0.8, 0);  // the tree is 37 degrees off axis
   // Level 2 texels (1/8 m) at 216 px focal length: 0.9 px at the distance (30 m), 1.1 px at the depth (24 m).
@@ -101,7 +88,7 @@ TEST(LodPlanes, AtLeastAsFineAsScreenAndFinerOffAxis) {
 
 // A forced level draws that level only, and every cell of it, whatever the rule.
 TEST(LodPlanes, ForcedLevelDrawsOnlyThatLevel) {
-  const VtreeAsset asset = Full(4);
+  const VtreeAsset asset = FullOctree(4);
   const OctreeIndex index(asset);
   for (int level = 0; level < 4; ++level) {
     LodOptions lod = Planes();
@@ -114,7 +101,7 @@ TEST(LodPlanes, ForcedLevelDrawsOnlyThatLevel) {
 }
 
 TEST(LodPlanes, NeedsAViewDirection) {
-  const VtreeAsset asset = Full(2);
+  const VtreeAsset asset = FullOctree(2);
   const OctreeIndex index(asset);
   std::vector<uint32_t> cells;
   EXPECT_THROW(TraverseBackToFront(index, {Eigen::Vector3d(0, -8, 1), 800.0}, Planes(), asset.texels, &cells), Error);

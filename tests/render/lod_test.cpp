@@ -6,25 +6,12 @@
 
 #include "core/error.h"
 #include "render/traversal.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
 
-VtreeAsset FullTree(int levels) {
-  VtreeAsset asset;
-  asset.origin = Eigen::Vector3d(-1, -1, 0);
-  asset.size = 2;
-  asset.texels = 4;
-  for (int l = 0; l < levels; ++l) {
-    VtreeLevel level;
-    level.resolution = 1u << l;
-    for (uint16_t x = 0; x < level.resolution; ++x)
-      for (uint16_t y = 0; y < level.resolution; ++y)
-        for (uint16_t z = 0; z < level.resolution; ++z) level.cells.push_back({x, y, z});
-    asset.levels.push_back(level);
-  }
-  return asset;
-}
+using test::FullOctree;
 
 TEST(Lod, TexelPixelsFollowsThePinholeModel) {
   // A 0.4 m cell with 4 texels at 10 m through a 1000 px focal length: 0.1 m * 1000 / 10 = 10 px.
@@ -40,7 +27,7 @@ TEST(Lod, TexelPixelsFollowsThePinholeModel) {
 // Moving the camera straight away from the tree (starting outside the root's bounding sphere, so
 // every point of the tree gets farther) never makes the level drawn over any finest cell finer.
 TEST(Lod, LevelNeverIncreasesWithDistance) {
-  const VtreeAsset asset = FullTree(5);
+  const VtreeAsset asset = FullOctree(5);
   const OctreeIndex index(asset);
   const Eigen::Vector3d centre(0, 0, 1);
   const Eigen::Vector3d direction = Eigen::Vector3d(0.8, 0.3, 0.4).normalized();
@@ -81,7 +68,7 @@ namespace {
 // every frame; with 15% hysteresis it stays where it is. Distances are chosen around the root's
 // threshold: texel = 2/4 m, focal 800 -> 1 px at 400 m.
 TEST(Lod, HysteresisStopsFlickerAtTheThreshold) {
-  const VtreeAsset asset = FullTree(2);
+  const VtreeAsset asset = FullOctree(2);
   const OctreeIndex index(asset);
   const Eigen::Vector3d direction = Eigen::Vector3d(1, 0, 0);
   const Eigen::Vector3d centre(0, 0, 1);

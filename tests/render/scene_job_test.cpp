@@ -3,7 +3,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <numbers>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -12,43 +11,14 @@
 #include "core/vtree.h"
 #include "render/tree_renderer_job.h"
 #include "render/turntable.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
 
-namespace fs = std::filesystem;
+using test::WhiteAsset;
 
-// Two levels of opaque white billboards filling [-1,1]^2 x [0,2]; four views.
-VtreeAsset WhiteAsset() {
-  VtreeAsset asset;
-  asset.origin = Eigen::Vector3d(-1, -1, 0);
-  asset.size = 2;
-  asset.texels = 4;
-  asset.bounds_min = asset.origin;
-  asset.bounds_max = Eigen::Vector3d(1, 1, 2);
-  for (int v = 0; v < 4; ++v) {
-    const double a = 2 * std::numbers::pi * v / 4;
-    const Eigen::Vector3d eye(5 * std::cos(a), 5 * std::sin(a), 1.5);
-    const Eigen::Matrix3d r = Pose::LookAt(eye, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ()).rotation.toRotationMatrix();
-    asset.views.push_back({"view_" + std::to_string(v) + ".png", eye, r.row(2).transpose(), -r.row(1).transpose()});
-  }
-  asset.levels.resize(2);
-  asset.levels[0].resolution = 1;
-  asset.levels[0].cells = {{0, 0, 0}};
-  asset.levels[1].resolution = 2;
-  asset.levels[1].cells = {{0, 0, 0}, {1, 1, 1}};
-  for (auto& level : asset.levels) {
-    level.density.assign(level.cells.size(), 1.0f);
-    for (uint32_t c = 0; c < level.cells.size(); ++c)
-      for (uint16_t v = 0; v < 4; ++v) level.billboards.push_back({c, v, 0, 0});
-  }
-  asset.colour_codebook_size = asset.alpha_codebook_size = 1;
-  asset.atlas.width = asset.atlas.height = 4;
-  asset.atlas.tiles_per_row = 1;
-  asset.atlas.tile_count = 1;
-  asset.atlas.dxt5 = {255, 255, 0, 0, 0, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0, 0, 0, 0};
-  return asset;
-}
+namespace fs = std::filesystem;
 
 struct TempDir {
   fs::path path = fs::temp_directory_path() / ("voltree_scene_job_" + std::to_string(::getpid()));

@@ -5,45 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <numbers>
 
 #include "render/gl_context.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
 
-VtreeAsset WhiteCube() {
-  VtreeAsset asset;
-  asset.origin = Eigen::Vector3d(-1, -1, 0);
-  asset.size = 2;
-  asset.texels = 4;
-  asset.bounds_min = asset.origin;
-  asset.bounds_max = Eigen::Vector3d(1, 1, 2);
-  for (int v = 0; v < 8; ++v) {
-    const double a = 2 * std::numbers::pi * v / 8;
-    const Eigen::Vector3d eye(5 * std::cos(a), 5 * std::sin(a), 1);
-    const Eigen::Matrix3d r = Pose::LookAt(eye, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ()).rotation.toRotationMatrix();
-    asset.views.push_back({"view_" + std::to_string(v) + ".png", eye, r.row(2).transpose(), -r.row(1).transpose()});
-  }
-  asset.levels.resize(2);
-  asset.levels[0].resolution = 1;
-  asset.levels[0].cells = {{0, 0, 0}};
-  asset.levels[1].resolution = 2;
-  for (uint16_t x = 0; x < 2; ++x)
-    for (uint16_t y = 0; y < 2; ++y)
-      for (uint16_t z = 0; z < 2; ++z) asset.levels[1].cells.push_back({x, y, z});
-  for (auto& level : asset.levels) {
-    level.density.assign(level.cells.size(), 1.0f);
-    for (uint32_t c = 0; c < level.cells.size(); ++c)
-      for (uint16_t v = 0; v < 8; ++v) level.billboards.push_back({c, v, 0, 0});
-  }
-  asset.colour_codebook_size = asset.alpha_codebook_size = 1;
-  asset.atlas.width = asset.atlas.height = 4;
-  asset.atlas.tiles_per_row = 1;
-  asset.atlas.tile_count = 1;
-  asset.atlas.dxt5 = {255, 255, 0, 0, 0, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0, 0, 0, 0};  // opaque white
-  return asset;
-}
+using test::WhiteAsset;
 
 Scene ThreeTrees(bool with_ground) {
   Scene scene;
@@ -87,7 +56,7 @@ TEST(SceneRenderer, InstancesAppearWhereTheyProjectAndTheGroundHidesWhatIsBelowI
   GlContext context;
   constexpr int kSize = 160;
   const View view = Camera(kSize);
-  const std::vector<VtreeAsset> assets = {WhiteCube()};
+  const std::vector<VtreeAsset> assets = {WhiteAsset({.views = 8, .eye_height = 1, .every_fine_cell = true})};
   SceneRenderer renderer(ThreeTrees(true), assets);
   SceneRenderOptions options;
   SceneFrameStats stats;
@@ -122,7 +91,7 @@ TEST(SceneRenderer, InstancesAppearWhereTheyProjectAndTheGroundHidesWhatIsBelowI
 
 TEST(SceneRenderer, CullsWhatIsBehindTheCamera) {
   GlContext context;
-  const std::vector<VtreeAsset> assets = {WhiteCube()};
+  const std::vector<VtreeAsset> assets = {WhiteAsset({.views = 8, .eye_height = 1, .every_fine_cell = true})};
   Scene scene = ThreeTrees(true);
   scene.instances.push_back({0, {Eigen::Vector3d(0, -40, 0), 0, 1}});  // behind the eye at y = -22
   SceneRenderer renderer(scene, assets);

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <numbers>
 #include <unistd.h>
 
 #include "core/colmap_model.h"
@@ -11,45 +10,14 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "core/vtree.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
 
-namespace fs = std::filesystem;
+using test::WhiteAsset;
 
-// A two-level asset with uniform opaque white tiles, four views around the tree.
-VtreeAsset SmallAsset() {
-  VtreeAsset asset;
-  asset.origin = Eigen::Vector3d(-1, -1, 0);
-  asset.size = 2;
-  asset.texels = 4;
-  asset.bounds_min = asset.origin;
-  asset.bounds_max = Eigen::Vector3d(1, 1, 2);
-  for (int v = 0; v < 4; ++v) {
-    const double a = 2 * std::numbers::pi * v / 4;
-    const Eigen::Vector3d eye(5 * std::cos(a), 5 * std::sin(a), 1.5);
-    const Pose pose = Pose::LookAt(eye, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ());
-    const Eigen::Matrix3d r = pose.rotation.toRotationMatrix();
-    asset.views.push_back({"view_" + std::to_string(v) + ".png", eye, r.row(2).transpose(), -r.row(1).transpose()});
-  }
-  asset.levels.resize(2);
-  asset.levels[0].resolution = 1;
-  asset.levels[0].cells = {{0, 0, 0}};
-  asset.levels[1].resolution = 2;
-  asset.levels[1].cells = {{0, 0, 0}, {1, 1, 1}};
-  for (auto& level : asset.levels) {
-    level.density.assign(level.cells.size(), 1.0f);
-    for (uint32_t c = 0; c < level.cells.size(); ++c)
-      for (uint16_t v = 0; v < 4; ++v) level.billboards.push_back({c, v, 0, 0});
-    level.billboards_before_pruning = level.billboards.size();
-  }
-  asset.colour_codebook_size = asset.alpha_codebook_size = 1;
-  asset.atlas.width = asset.atlas.height = 4;
-  asset.atlas.tiles_per_row = 1;
-  asset.atlas.tile_count = 1;
-  asset.atlas.dxt5 = {255, 255, 0, 0, 0, 0, 0, 0, 0xff, 0xff, 0xff, 0xff, 0, 0, 0, 0};  // opaque white
-  return asset;
-}
+namespace fs = std::filesystem;
 
 struct TempDir {
   fs::path path = fs::temp_directory_path() / ("voltree_render_job_" + std::to_string(::getpid()));
@@ -84,7 +52,7 @@ TEST(RenderJob, ResizesCameras) {
 
 TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
   TempDir temp;
-  WriteAsset(temp.path / "tree.vtree", SmallAsset());
+  WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   RenderJobOptions options;
   options.asset = temp.path / "tree.vtree";
   options.orbit = 3;
@@ -112,7 +80,7 @@ TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
 
 TEST(RenderJob, CamerasFromAColmapModelNameTheFrames) {
   TempDir temp;
-  WriteAsset(temp.path / "tree.vtree", SmallAsset());
+  WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   ColmapModel model;
   model.cameras[1] = Camera::Pinhole(40, 30, 40, 40, 20, 15);
   ColmapImage image;
