@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "compress/kmeans_plus_plus.h"
 #include "compress/training_set.h"
 
 namespace voltree {
@@ -49,11 +50,6 @@ GlaResult RunGla(const TrainingSet& set, const GlaOptions& options, const GlaObs
 // The same from a given initial codebook (its size overrides options.codebook_size).
 GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook initial,
                      const GlaObserver& observer = {});
-
-// Greedy k-means++ seeding (Arthur & Vassilvitskii 2007): each centre is the best of `trials`
-// candidates drawn with probability proportional to the squared distance to the nearest centre.
-// Deterministic for a given seed.
-Codebook SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3);
 
 // The mean (weighted per component when the set has weights) of the given members.
 void ClusterMean(const TrainingSet& set, const uint32_t* members, size_t count, float* mean);

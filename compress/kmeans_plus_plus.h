@@ -1,0 +1,19 @@
+// Greedy k-means++ seeding (Arthur & Vassilvitskii 2007), the start of GLA: each centre is the
+// best of `trials` candidates drawn with probability proportional to the squared distance to the
+// nearest centre so far (OpenCV's KMEANS_PP_CENTERS does the same with 3 trials).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "compress/training_set.h"
+
+namespace voltree {
+
+// `count` centres (at most the number of vectors), deterministic for a given seed whatever the
+// number of threads. For plain L2 a candidate only measures the vectors it may take:
+// |c - a| >= 2 |x - a| (a = x's centre) proves c is not nearer to x, and a whole cell is passed
+// over when that holds for its farthest member.
+Codebook SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3);
+
+}  // namespace voltree
