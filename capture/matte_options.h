@@ -42,7 +42,7 @@ struct MatteOptions {
   // test (bark above the ground versus ground away from the trunk) found it; off: the test alone.
   bool ground_grabcut = true;
   // Trunk separation runs on a copy whose longer side is at most this (GrabCut is slow on photos).
-  int grabcut_max_side = 640;
+  int grabcut_max_side = 512;
   // Guided filter radius (pixels at 256 px, scaled with the image) and regularization.
   int guided_radius = 2;
   double guided_epsilon = 1e-4;
