@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
   app.add_option("--iterations", iterations, "Max GLA iterations for the PSNR table")->capture_default_str();
   app.add_option("--kmeans-iterations", kmeans_iterations, "Iterations for the cv::kmeans comparison")
       ->capture_default_str();
+  bool speed_only = false;
+  app.add_flag("--speed-only", speed_only, "Only the GLA vs cv::kmeans timing (skip the PSNR table and the bytes)");
   CLI11_PARSE(app, argc, argv);
   try {
     Volume volume;
@@ -98,52 +100,54 @@ int main(int argc, char** argv) {
     const int n = volume.texels, texel_count = n * n;
     std::printf("%zu billboards of %dx%d texels, %zu levels\n\n", CountBillboards(volume), n, n, volume.levels.size());
 
-    // 1. PSNR vs codebook size.
-    const std::vector<Variant> variants = {{"RGB-GLA", ColourSpace::kRgb, CodewordRule::kCentroid, false},
-                                           {"Lab-GLA", ColourSpace::kLab, CodewordRule::kCentroid, false},
-                                           {"Lab-modified", ColourSpace::kLab, CodewordRule::kClosestMember, false},
-                                           {"Lab-mod-alphaw", ColourSpace::kLab, CodewordRule::kClosestMember, true}};
-    std::printf("Texture PSNR (dB, premultiplied RGBA8 over all billboards; alpha codebook = colour size)\n");
-    std::printf("VQ = 8-bit codewords, DXT5 = fetched from the DXT5 atlas\n");
-    std::printf("%8s", "size");
-    for (const auto& v : variants) std::printf("  %16s", v.name);
-    std::printf("  %10s\n", "seconds");
-    const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
-    for (int size : sizes) {
-      GlaOptions alpha_options;
-      alpha_options.codebook_size = size;
-      alpha_options.max_iterations = iterations;
-      const GlaResult alpha = RunGla(alpha_set, alpha_options);
-      const std::vector<uint8_t> alpha_bytes = DecodeAlphaCodebook(alpha.codebook);
-      std::printf("%8d", size);
-      double seconds = 0;
-      for (const auto& v : variants) {
-        const Quality q = Measure(texels, n, v, size, alpha, alpha_bytes, iterations);
-        std::printf("  %7.2f / %6.2f", q.psnr_vq, q.psnr_dxt5);
-        seconds += q.seconds;
-        std::fflush(stdout);
+    if (!speed_only) {  // 1. and 2.
+      // 1. PSNR vs codebook size.
+      const std::vector<Variant> variants = {{"RGB-GLA", ColourSpace::kRgb, CodewordRule::kCentroid, false},
+                                             {"Lab-GLA", ColourSpace::kLab, CodewordRule::kCentroid, false},
+                                             {"Lab-modified", ColourSpace::kLab, CodewordRule::kClosestMember, false},
+                                             {"Lab-mod-alphaw", ColourSpace::kLab, CodewordRule::kClosestMember, true}};
+      std::printf("Texture PSNR (dB, premultiplied RGBA8 over all billboards; alpha codebook = colour size)\n");
+      std::printf("VQ = 8-bit codewords, DXT5 = fetched from the DXT5 atlas\n");
+      std::printf("%8s", "size");
+      for (const auto& v : variants) std::printf("  %16s", v.name);
+      std::printf("  %10s\n", "seconds");
+      const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
+      for (int size : sizes) {
+        GlaOptions alpha_options;
+        alpha_options.codebook_size = size;
+        alpha_options.max_iterations = iterations;
+        const GlaResult alpha = RunGla(alpha_set, alpha_options);
+        const std::vector<uint8_t> alpha_bytes = DecodeAlphaCodebook(alpha.codebook);
+        std::printf("%8d", size);
+        double seconds = 0;
+        for (const auto& v : variants) {
+          const Quality q = Measure(texels, n, v, size, alpha, alpha_bytes, iterations);
+          std::printf("  %7.2f / %6.2f", q.psnr_vq, q.psnr_dxt5);
+          seconds += q.seconds;
+          std::fflush(stdout);
+        }
+        std::printf("  %10.1f\n", seconds);
       }
-      std::printf("  %10.1f\n", seconds);
-    }
 
-    // 2. Bytes at the default settings.
-    CompressOptions defaults;
-    const auto start = std::chrono::steady_clock::now();
-    const CompressResult result = CompressVolume(volume, defaults);
-    const double compress_seconds = Seconds(start);
-    VtreeWriteOptions zstd;
-    zstd.zstd = true;
-    const uint64_t raw_file = SerializeAsset(result.asset).size();
-    const uint64_t zstd_file = SerializeAsset(result.asset, zstd).size();
-    const AssetBytes bytes = CountAssetBytes(result.asset, raw_file);
-    std::printf("\nDefault compress (codebook %d / %d, lab, modified GLA): %.1f s, PSNR %.2f dB VQ, %.2f dB DXT5\n",
-                defaults.colour_codebook, defaults.alpha_codebook, compress_seconds, result.stats.psnr_vq,
-                result.stats.psnr_dxt5);
-    std::printf("%s", DescribeAsset(result.asset, bytes).c_str());
-    std::printf("  on disk with --zstd          %llu bytes\n", static_cast<unsigned long long>(zstd_file));
-    std::printf("  ratio uncompressed -> GPU textures: %.1f:1 (atlas only); %.1f:1 counting the 4-byte index pairs\n",
-                double(bytes.uncompressed_textures) / double(bytes.GpuTextures()),
-                double(bytes.uncompressed_textures) / double(bytes.gpu_atlas + bytes.vq_indices));
+      // 2. Bytes at the default settings.
+      CompressOptions defaults;
+      const auto start = std::chrono::steady_clock::now();
+      const CompressResult result = CompressVolume(volume, defaults);
+      const double compress_seconds = Seconds(start);
+      VtreeWriteOptions zstd;
+      zstd.zstd = true;
+      const uint64_t raw_file = SerializeAsset(result.asset).size();
+      const uint64_t zstd_file = SerializeAsset(result.asset, zstd).size();
+      const AssetBytes bytes = CountAssetBytes(result.asset, raw_file);
+      std::printf("\nDefault compress (codebook %d / %d, lab, modified GLA): %.1f s, PSNR %.2f dB VQ, %.2f dB DXT5\n",
+                  defaults.colour_codebook, defaults.alpha_codebook, compress_seconds, result.stats.psnr_vq,
+                  result.stats.psnr_dxt5);
+      std::printf("%s", DescribeAsset(result.asset, bytes).c_str());
+      std::printf("  on disk with --zstd          %llu bytes\n", static_cast<unsigned long long>(zstd_file));
+      std::printf("  ratio uncompressed -> GPU textures: %.1f:1 (atlas only); %.1f:1 counting the 4-byte index pairs\n",
+                  double(bytes.uncompressed_textures) / double(bytes.GpuTextures()),
+                  double(bytes.uncompressed_textures) / double(bytes.gpu_atlas + bytes.vq_indices));
+    }
 
     // 3. GLA vs cv::kmeans, same vectors, same initialization rule (k-means++), same iterations.
     const TrainingSet set = ColourVectors(texels, texel_count, ColourSpace::kLab, false);

@@ -138,9 +138,8 @@ GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook
   result.codebook = std::move(initial);
   const size_t k_count = result.codebook.size();
   std::vector<float> distances;
-  AssignmentBounds bounds;  // codewords move less and less: most vectors skip the search
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    AssignNearest(result.codebook, set, result.assignment, distances, &bounds);
+    AssignNearest(result.codebook, set, result.assignment, distances);
     const double distortion = SumInOrder(distances) / double(n);
     result.distortion_history.push_back(distortion);
     result.iterations = iteration + 1;
@@ -167,7 +166,7 @@ GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook
       const uint32_t member = ClosestMember(set, clusters.Begin(k), clusters.Size(k), mean.data());
       std::copy_n(set.Vector(member), set.dimension, result.codebook.Codeword(k));
     });
-    AssignNearest(result.codebook, set, result.assignment, distances, &bounds);
+    AssignNearest(result.codebook, set, result.assignment, distances);
     result.distortion = SumInOrder(distances) / double(n);
   }
   return result;

@@ -11,9 +11,8 @@
 namespace voltree {
 
 // `count` centres (at most the number of vectors), deterministic for a given seed whatever the
-// number of threads. For plain L2 a candidate only measures the vectors it may take:
-// |c - a| >= 2 |x - a| (a = x's centre) proves c is not nearer to x, and a whole cell is passed
-// over when that holds for its farthest member.
+// number of threads. Each candidate is one parallel pass over the vectors; for plain L2,
+// |c - a| >= 2 |x - a| (a = x's centre) proves c is not nearer to x without measuring it.
 Codebook SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3);
 
 }  // namespace voltree

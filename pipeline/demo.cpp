@@ -138,7 +138,7 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   summary["options"] = used;
   WriteFileAtomic(workspace / kMarker, summary.dump(2) + "\n");
   stage.Commit();
-  progress.Say("demo", Str("done in ", total, " s: ", options.output.string(), " (asset ",
+  progress.Say("demo", Str("done in ", std::round(total * 10) / 10, " s: ", options.output.string(), " (asset ",
                            (options.output / "tree.vtree").string(), ")"));
   result.summary = options.output / kMarker;
   result.seconds = total;

@@ -345,7 +345,7 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   result.index_html = report / kIndexHtmlName;
   WriteFileAtomic(result.index_html, ReportHtml(page));
   result.seconds = progress.ElapsedSeconds() - start;
-  progress.Say("eval", Str("wrote ", result.index_html.string(), " (rendering ", result.render_seconds, " s)"));
+  progress.Say("eval", Str("wrote ", result.index_html.string(), " (rendering ", std::round(result.render_seconds * 10) / 10, " s)"));
   return result;
 }
 

@@ -42,7 +42,7 @@ PruningStats ReadPruningStats(const fs::path& workspace, const VtreeAsset& asset
       Fail(volume_json.string(), ": field 'levels' (level, billboards_before_pruning, billboards, pruned_percent): ",
            e.what());
     }
-    stats.source = volume_json.string();
+    stats.source = "volume/volume.json";  // relative: the workspace may still be a staging folder
     return stats;
   }
   for (size_t l = 0; l < asset.levels.size(); ++l) {

@@ -21,7 +21,7 @@ struct LevelPruning {
 };
 
 struct PruningStats {
-  std::string source;  // the file the numbers come from
+  std::string source;  // the file the numbers come from (relative to the workspace when inside it)
   std::vector<LevelPruning> levels;
 };
 

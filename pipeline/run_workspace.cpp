@@ -1,5 +1,7 @@
 #include "pipeline/run_workspace.h"
 
+#include <cmath>
+
 #include "compress/compress_workspace.h"
 #include "core/error.h"
 #include "core/files.h"
@@ -65,7 +67,7 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     work();
     const double seconds = progress.ElapsedSeconds() - start;
     result.stages.push_back({name, seconds, "ran"});
-    progress.Say(name, Str("done in ", seconds, " s"));
+    progress.Say(name, Str("done in ", std::round(seconds * 10) / 10, " s"));
   };
 
   stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
