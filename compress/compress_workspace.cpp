@@ -19,7 +19,8 @@ fs::path CompressWorkspace(const fs::path& workspace, const CompressOptions& opt
   CompressResult result = CompressVolume(volume, options, progress);
   // The workspace's folder name only: an absolute path would make the bytes depend on where it lives.
   const fs::path name = dir.filename().empty() ? dir.parent_path().filename() : dir.filename();
-  result.asset.provenance["source"] = name.string();
+  result.asset.provenance["source"] =
+      workspace_options.source_name.empty() ? name.string() : workspace_options.source_name;
   VtreeWriteOptions write;
   write.zstd = workspace_options.zstd;
   write.force = workspace_options.force;

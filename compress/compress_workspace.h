@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "compress/compress_volume.h"
 #include "core/progress.h"
@@ -13,6 +14,9 @@ struct CompressWorkspaceOptions {
   std::filesystem::path output;  // empty: DIR/tree.vtree
   bool zstd = false;             // zstd-compress the asset's chunks on disk
   bool force = false;            // overwrite an existing asset
+  // The asset's provenance "source"; empty: DIR's folder name. A caller working in a staging
+  // folder gives the final name, so that the bytes do not depend on the staging folder's.
+  std::string source_name;
 };
 
 // Reads DIR/volume, compresses it and writes the asset atomically; refuses an existing asset

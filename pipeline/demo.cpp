@@ -96,7 +96,10 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   timed("reconstruct", [&] { ReconstructWorkspace(workspace, options.reconstruct, false, &progress); });
   CompressStats compress_stats;
   timed("compress", [&] {
-    CompressWorkspace(workspace, options.compress, {}, &progress, &compress_stats);
+    CompressWorkspaceOptions where;
+    where.source_name = options.output.lexically_normal().filename().string();  // not the staging folder's
+    if (where.source_name.empty()) where.source_name = options.output.lexically_normal().parent_path().filename().string();
+    CompressWorkspace(workspace, options.compress, where, &progress, &compress_stats);
   });
   if (options.orbit.frames > 0)
     timed("orbit", [&] {

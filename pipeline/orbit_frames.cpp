@@ -14,6 +14,8 @@ RenderJobResult RenderOrbitFrames(const std::filesystem::path& asset, const std:
   options.Check();
   RenderJobOptions job;
   job.asset = asset;
+  // Relative to the frames, so the report names it the same before and after a staging rename.
+  job.asset_label = asset.lexically_normal().lexically_relative(folder.lexically_normal()).string();
   job.orbit = options.frames;
   job.width = job.height = options.size;
   job.output = folder;

@@ -205,7 +205,8 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   if (staged) {
     // Timings vary run to run, so they stay out of the folder: its files are deterministic.
     WriteFileAtomic(staged->path() / "frames.json",
-                    nlohmann::json{{"asset", options.asset.string()}, {"frames", frames}}.dump(2) + "\n");
+                    nlohmann::json{{"asset", options.asset_label.empty() ? options.asset.string() : options.asset_label},
+                                   {"frames", frames}}.dump(2) + "\n");
     staged->Commit();
   }
   return result;

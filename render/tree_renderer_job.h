@@ -16,6 +16,7 @@ namespace voltree {
 
 struct RenderJobOptions {
   std::filesystem::path asset;       // a .vtree, or a scene .json
+  std::string asset_label;           // how frames.json names the asset (default: its path)
   std::filesystem::path asset_folder;  // scenes: where their assets are looked up (default: the scene's folder)
   int orbit = 0;                     // > 0: that many orbit frames
   std::filesystem::path cameras;     // else: a COLMAP text model; frames named after its images
