@@ -8,15 +8,14 @@
 #include <unistd.h>
 
 #include "core/files.h"
+#include "voltree_binary.h"
 
 namespace voltree {
 namespace {
 
 namespace fs = std::filesystem;
 
-int Voltree(const std::string& arguments) {
-  return std::system((std::string(VOLTREE_BINARY) + " " + arguments).c_str());
-}
+using test::Voltree;
 
 class DemoCli : public ::testing::Test {
  protected:
