@@ -38,9 +38,13 @@ struct Clusters {
 
 // Moves every empty cell's codeword onto the member of the currently worst cell (largest total
 // distortion) that is farthest from its codeword, so the next assignment splits that cell.
-int ReseedEmptyCells(const TrainingSet& set, const Clusters& clusters, std::vector<float> distances,
+int ReseedEmptyCells(const TrainingSet& set, const Clusters& clusters, const std::vector<float>& measured,
                      Codebook& codebook) {
   const size_t count = codebook.size();
+  bool any_empty = false;
+  for (size_t k = 0; k < count && !any_empty; ++k) any_empty = clusters.Size(k) == 0;
+  if (!any_empty) return 0;
+  std::vector<float> distances = measured;  // taken vectors are zeroed below
   std::vector<double> cell_distortion(count, 0);
   for (size_t k = 0; k < count; ++k)
     for (size_t m = 0; m < clusters.Size(k); ++m) cell_distortion[k] += distances[clusters.Begin(k)[m]];
@@ -74,72 +78,17 @@ uint32_t ClosestMember(const TrainingSet& set, const uint32_t* members, size_t c
   return best;
 }
 
-}  // namespace
-
-CodewordRule ParseCodewordRule(const std::string& name) {
-  if (name == "classic") return CodewordRule::kCentroid;
-  if (name == "modified") return CodewordRule::kClosestMember;
-  Fail("--gla: expected 'classic' or 'modified', got '", name, "'");
-}
-
-std::string CodewordRuleName(CodewordRule rule) {
-  return rule == CodewordRule::kCentroid ? "classic" : "modified";
-}
-
-void GlaOptions::Check() const {
-  if (codebook_size < 1 || codebook_size > 65536)
-    Fail("codebook size: expected 1..65536, got ", codebook_size);
-  if (!(tolerance >= 0 && tolerance < 1)) Fail("GLA tolerance: expected [0, 1), got ", tolerance);
-  if (max_iterations < 1) Fail("GLA iterations: expected >= 1, got ", max_iterations);
-  if (seeding_trials < 1 || seeding_trials > 64) Fail("k-means++ trials: expected 1..64, got ", seeding_trials);
-}
-
-void ClusterMean(const TrainingSet& set, const uint32_t* members, size_t count, float* mean) {
-  const int dimension = set.dimension;
-  std::vector<double> sum(dimension, 0), weight(dimension, 0), plain(dimension, 0);
-  for (size_t m = 0; m < count; ++m) {
-    const float* x = set.Vector(members[m]);
-    const float* w = set.Weights(members[m]);
-    for (int i = 0; i < dimension; ++i) {
-      plain[i] += x[i];
-      if (w) sum[i] += double(w[i]) * x[i], weight[i] += w[i];
-    }
-  }
-  for (int i = 0; i < dimension; ++i) {
-    // A component no member cares about (all weights 0) takes the plain mean.
-    mean[i] = static_cast<float>(weight[i] > 0 ? sum[i] / weight[i] : plain[i] / double(count));
-  }
-}
-
-double MeanDistortion(const Codebook& codebook, const TrainingSet& set) {
-  std::vector<uint32_t> assignment;
-  std::vector<float> distances;
-  AssignNearest(codebook, set, assignment, distances);
-  return set.size() ? SumInOrder(distances) / double(set.size()) : 0;
-}
-
-GlaResult RunGla(const TrainingSet& set, const GlaOptions& options, const GlaObserver& observer) {
-  options.Check();
-  set.Check();
-  if (set.size() == 0) Fail("GLA: no training vectors");
-  return RunGlaFrom(set, options,
-                    SeedKMeansPlusPlus(set, static_cast<size_t>(options.codebook_size), options.seed,
-                                       options.seeding_trials),
-                    observer);
-}
-
-GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook initial, const GlaObserver& observer) {
-  options.Check();
-  if (set.size() == 0) Fail("GLA: no training vectors");
-  if (initial.dimension != set.dimension || initial.size() == 0)
-    Fail("GLA: initial codebook of dimension ", initial.dimension, " for vectors of dimension ", set.dimension);
+// Lloyd iterations from `initial`; `assignment` and `distances` are the first assignment when
+// given (from the seeding), else it is computed.
+GlaResult RunLloyd(const TrainingSet& set, const GlaOptions& options, Codebook initial,
+                   std::vector<uint32_t> assignment, std::vector<float> distances, const GlaObserver& observer) {
   const size_t n = set.size();
   GlaResult result;
   result.codebook = std::move(initial);
+  result.assignment = std::move(assignment);
   const size_t k_count = result.codebook.size();
-  std::vector<float> distances;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    AssignNearest(result.codebook, set, result.assignment, distances);
+    if (iteration > 0 || distances.size() != n) AssignNearest(result.codebook, set, result.assignment, distances);
     const double distortion = SumInOrder(distances) / double(n);
     result.distortion_history.push_back(distortion);
     result.iterations = iteration + 1;
@@ -170,6 +119,72 @@ GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook
     result.distortion = SumInOrder(distances) / double(n);
   }
   return result;
+}
+
+
+}  // namespace
+
+CodewordRule ParseCodewordRule(const std::string& name) {
+  if (name == "classic") return CodewordRule::kCentroid;
+  if (name == "modified") return CodewordRule::kClosestMember;
+  Fail("--gla: expected 'classic' or 'modified', got '", name, "'");
+}
+
+std::string CodewordRuleName(CodewordRule rule) {
+  return rule == CodewordRule::kCentroid ? "classic" : "modified";
+}
+
+void GlaOptions::Check() const {
+  if (codebook_size < 1 || codebook_size > 65536)
+    Fail("codebook size: expected 1..65536, got ", codebook_size);
+  if (!(tolerance >= 0 && tolerance < 1)) Fail("GLA tolerance: expected [0, 1), got ", tolerance);
+  if (max_iterations < 1) Fail("GLA iterations: expected >= 1, got ", max_iterations);
+  if (seeding_trials < 1 || seeding_trials > 64) Fail("k-means++ trials: expected 1..64, got ", seeding_trials);
+}
+
+void ClusterMean(const TrainingSet& set, const uint32_t* members, size_t count, float* mean) {
+  const int dimension = set.dimension;
+  std::vector<double> sum(dimension, 0), weight(dimension, 0), plain(dimension, 0);
+  constexpr size_t kAhead = 8;  // members are scattered over the set: fetch ahead
+  for (size_t m = 0; m < count; ++m) {
+    if (m + kAhead < count) PrefetchVector(set.Vector(members[m + kAhead]), dimension);
+    const float* x = set.Vector(members[m]);
+    const float* w = set.Weights(members[m]);
+    for (int i = 0; i < dimension; ++i) {
+      plain[i] += x[i];
+      if (w) sum[i] += double(w[i]) * x[i], weight[i] += w[i];
+    }
+  }
+  for (int i = 0; i < dimension; ++i) {
+    // A component no member cares about (all weights 0) takes the plain mean.
+    mean[i] = static_cast<float>(weight[i] > 0 ? sum[i] / weight[i] : plain[i] / double(count));
+  }
+}
+
+double MeanDistortion(const Codebook& codebook, const TrainingSet& set) {
+  std::vector<uint32_t> assignment;
+  std::vector<float> distances;
+  AssignNearest(codebook, set, assignment, distances);
+  return set.size() ? SumInOrder(distances) / double(set.size()) : 0;
+}
+
+GlaResult RunGla(const TrainingSet& set, const GlaOptions& options, const GlaObserver& observer) {
+  options.Check();
+  set.Check();
+  if (set.size() == 0) Fail("GLA: no training vectors");
+  Seeds seeds = SeedKMeansPlusPlus(set, static_cast<size_t>(options.codebook_size), options.seed,
+                                   options.seeding_trials);
+  // The seeding leaves every vector with its nearest centre: the first assignment, already made.
+  return RunLloyd(set, options, std::move(seeds.centres), std::move(seeds.nearest), std::move(seeds.distances),
+                  observer);
+}
+
+GlaResult RunGlaFrom(const TrainingSet& set, const GlaOptions& options, Codebook initial, const GlaObserver& observer) {
+  options.Check();
+  if (set.size() == 0) Fail("GLA: no training vectors");
+  if (initial.dimension != set.dimension || initial.size() == 0)
+    Fail("GLA: initial codebook of dimension ", initial.dimension, " for vectors of dimension ", set.dimension);
+  return RunLloyd(set, options, std::move(initial), {}, {}, observer);
 }
 
 }  // namespace voltree

@@ -5,14 +5,24 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "compress/training_set.h"
 
 namespace voltree {
 
+struct Seeds {
+  Codebook centres;
+  // Every vector's nearest centre (lowest index on ties) and squared distance to it: exactly what
+  // AssignNearest(centres) returns, found along the way.
+  std::vector<uint32_t> nearest;
+  std::vector<float> distances;
+};
+
 // `count` centres (at most the number of vectors), deterministic for a given seed whatever the
-// number of threads. Each candidate is one parallel pass over the vectors; for plain L2,
-// |c - a| >= 2 |x - a| (a = x's centre) proves c is not nearer to x without measuring it.
-Codebook SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3);
+// number of threads. All trials of a step are measured in one parallel pass, and for plain L2
+// two bounds skip most vectors without measuring them (see kmeans_plus_plus.cpp). `use_simd` =
+// false keeps the bounds to the baseline instruction set (tests compare the two).
+Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3, bool use_simd = true);
 
 }  // namespace voltree

@@ -1,8 +1,10 @@
-// Nearest-codeword search for vector quantization, the inner loop of GLA and of encoding.
-// Exact: returns what a brute-force scan returns (smallest distance, lowest index on ties), but
-// prunes with (1) the previous assignment as a starting bound, (2) partial distance elimination,
-// and (3) for unweighted distances, codewords sorted by norm with the bound
-// (|x| - |c|)^2 <= |x - c|^2, scanning outward from |x| until it exceeds the best distance.
+// Nearest-codeword search for vector quantization, the inner loop of GLA and of encoding. Exact:
+// it returns what a brute-force scan returns (smallest distance, lowest index on ties).
+//  - Plain L2: the distances to all codewords are one matrix product per block of vectors
+//    (compress/codeword_scores.h); the few codewords within its rounding bound of the best are
+//    then measured directly, and the measure decides.
+//  - Weighted L2 (each vector its own weights, so no shared product): a scan from the previous
+//    codeword of the vector, with partial distance elimination.
 #pragma once
 
 #include <cstdint>
@@ -17,28 +19,12 @@ struct CodewordMatch {
   float distance = 0;  // squared, weighted when weights are given
 };
 
-class NearestCodewordSearch {
- public:
-  explicit NearestCodewordSearch(const Codebook& codebook);
-
-  // `weights` may be null (plain L2). `hint` is a codeword index to try first (e.g. the
-  // previous assignment), or any value >= size() for none.
-  CodewordMatch Find(const float* vector, const float* weights, uint32_t hint) const;
-
- private:
-  CodewordMatch FindWeighted(const float* vector, const float* weights, uint32_t hint) const;
-
-  const Codebook& codebook_;
-  std::vector<uint32_t> by_norm_;    // codeword indices sorted by norm, ties by index
-  std::vector<float> sorted_norms_;  // norms in that order
-};
-
 // Reference implementation for tests and benchmarks.
 CodewordMatch BruteForceNearest(const Codebook& codebook, const float* vector, const float* weights);
 
 // Assigns every training vector to its nearest codeword, in parallel (TBB) and deterministically.
-// `assignment` holds hints on entry (or is empty) and the result on exit; `distances` gets the
-// squared distance of each vector to its codeword.
+// `assignment` holds hints on entry (or is empty; only the weighted scan uses them) and the result
+// on exit; `distances` gets the squared distance of each vector to its codeword.
 void AssignNearest(const Codebook& codebook, const TrainingSet& set, std::vector<uint32_t>& assignment,
                    std::vector<float>& distances);
 

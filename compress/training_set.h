@@ -5,13 +5,15 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
+
 namespace voltree {
 
 struct TrainingSet {
   int dimension = 0;
-  std::vector<float> vectors;  // size() * dimension
+  HugePageVector<float> vectors;  // size() * dimension; read at random by GLA
   // Empty (plain L2) or one weight >= 0 per component: distance = sum w_i (x_i - c_i)^2.
-  std::vector<float> weights;
+  HugePageVector<float> weights;
 
   size_t size() const { return dimension > 0 ? vectors.size() / dimension : 0; }
   bool weighted() const { return !weights.empty(); }

@@ -2,6 +2,7 @@
 #include "compress/compress_volume.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "compress/synthetic_volume.h"
 #include "core/error.h"
@@ -58,6 +59,17 @@ TEST(CompressVolume, Deterministic) {
   CompressOptions options = SmallCodebooks();
   options.alpha_weighted = true;
   EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset), SerializeAsset(CompressVolume(volume, options).asset));
+}
+
+TEST(CompressVolume, SameBytesWhateverTheThreads) {
+  const Volume volume = TestVolume();
+  for (bool weighted : {false, true}) {
+    CompressOptions options = SmallCodebooks();
+    options.alpha_weighted = weighted;
+    const std::string threaded = SerializeAsset(CompressVolume(volume, options).asset);
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset), threaded) << (weighted ? "weighted" : "plain");
+  }
 }
 
 TEST(CompressVolume, RejectsEmptyVolumesAndBadOptions) {
