@@ -51,28 +51,26 @@ struct Joiner {
   }
 };
 
-// Greedy k-means++ state. The trials of one step are measured in one pass, so each vector is read
-// once per step whatever the number of trials. Every sum runs in a fixed order (cells, then
-// chunks, in order), so the result does not depend on the number of threads.
-class Seeding {
+// Greedy k-means++ state for plain L2, where the bounds of centre_bounds.h hold. The trials of one
+// step are measured in one pass. Every sum runs in a fixed order (cells, then chunks, in order),
+// so the result does not depend on the number of threads.
+class BoundedSeeding {
  public:
   // Starts from training vector `first_centre` as centre 0: one cell holding every vector.
-  Seeding(const TrainingSet& set, uint32_t first_centre, bool use_simd)
-      : set_(set), pruned_(!set.weighted()), avx2_(use_simd && CpuHasAvx2Fma()) {
+  BoundedSeeding(const TrainingSet& set, uint32_t first_centre, bool use_simd)
+      : set_(set), avx2_(use_simd && CpuHasAvx2Fma()) {
     const size_t n = set.size();
-    if (pruned_) {
-      axes_ = FindPrincipalAxes(set, kSketchAxes);
-      projected_.resize(n * axes_.count);
-      axes_.ProjectAll(set, projected_.data());
-    }
+    axes_ = FindPrincipalAxes(set, kSketchAxes);
+    projected_.resize(n * axes_.count);
+    axes_.ProjectAll(set, projected_.data());
     const size_t capacity = n + n / 2 + 1;  // compacted about every n / 2 moves
     arena_.index.resize(capacity);
     arena_.key.resize(capacity);
     arena_.nearest.resize(capacity);
-    arena_.sketch.resize(pruned_ ? capacity : 0);
+    arena_.sketch.resize(capacity);
     std::vector<Joiner> everyone(n);
     tbb::parallel_for(size_t(0), n, [&](size_t i) {
-      everyone[i] = {uint32_t(i), SquaredDistance(set.Vector(i), set.Vector(first_centre), set.Weights(i), set.dimension)};
+      everyone[i] = {uint32_t(i), SquaredDistance(set.Vector(i), set.Vector(first_centre), nullptr, set.dimension)};
     });
     AddCell(std::move(everyone), first_centre);
   }
@@ -128,22 +126,19 @@ class Seeding {
       const Cell& cell = cells_[c];
       size_t lowest = cell.end;
       for (size_t t = 0; t < trials; ++t) {
+        const float gap2 = SquaredDistance(set_.Vector(candidates[t]), set_.Vector(cell.centre), nullptr, dimension);
+        // Members with 4 |x - a|^2 < |c - a|^2 (with a margin for rounding) cannot move.
         size_t& first = from[c * trials + t];
-        first = cell.begin;
-        if (pruned_) {
-          const float gap2 = SquaredDistance(set_.Vector(candidates[t]), set_.Vector(cell.centre), nullptr, dimension);
-          first = std::partition_point(arena_.key.begin() + cell.begin, arena_.key.begin() + cell.end,
-                                       [gap2](float d) { return 4.f * d * (1.f + 1e-4f) < gap2; }) -
-                  arena_.key.begin();
-          probes[c * slots + t] = MakeSketch(Projected(candidates[t]), Projected(cell.centre), axes_.count, gap2, true);
-          gaps2[c * slots + t] = gap2;
-        }
+        first = std::partition_point(arena_.key.begin() + cell.begin, arena_.key.begin() + cell.end,
+                                     [gap2](float d) { return 4.f * d * (1.f + 1e-4f) < gap2; }) -
+                arena_.key.begin();
+        probes[c * slots + t] = MakeSketch(Projected(candidates[t]), Projected(cell.centre), axes_.count, gap2, true);
+        gaps2[c * slots + t] = gap2;
         lowest = std::min(lowest, first);
       }
       for (size_t begin = lowest; begin < cell.end; begin += kChunk)
         chunks_.push_back({c, begin, std::min(cell.end, begin + kChunk), {}});
     }
-    const uint64_t all_trials = trials == 64 ? ~0ull : (1ull << trials) - 1;
     std::vector<double> gains(chunks_.size() * trials, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, chunks_.size()), [&](const tbb::blocked_range<size_t>& range) {
       // First every member the bounds cannot rule out, then the measures, in one long run so
@@ -151,14 +146,9 @@ class Seeding {
       std::vector<Passed> passed;
       for (size_t k = range.begin(); k != range.end(); ++k) {
         const Chunk& chunk = chunks_[k];
-        if (pruned_) {
-          const Run run{uint32_t(k), chunk.begin, chunk.end, arena_.nearest.data(), arena_.sketch.data(),
-                        &from[chunk.cell * trials], trials, &probes[chunk.cell * slots], &gaps2[chunk.cell * slots]};
-          CollectPassed(run, avx2_, passed);
-          continue;
-        }
-        for (size_t m = chunk.begin; m < chunk.end; ++m)  // weighted: no bounds, every member is measured
-          if (arena_.nearest[m] > 0) passed.push_back({uint32_t(k), uint32_t(m), all_trials});
+        const Run run{uint32_t(k), chunk.begin, chunk.end, arena_.nearest.data(), arena_.sketch.data(),
+                      &from[chunk.cell * trials], trials, &probes[chunk.cell * slots], &gaps2[chunk.cell * slots]};
+        CollectPassed(run, avx2_, passed);
       }
       MeasurePassed(passed, candidates, gains);
     });
@@ -219,7 +209,7 @@ class Seeding {
       const float nearest = arena_.nearest[m];
       for (size_t t = 0; t < trials; ++t) {
         if (!(passed[j].trials >> t & 1)) continue;
-        const float d = SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), set_.Weights(i), dimension, nearest);
+        const float d = SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), nullptr, dimension, nearest);
         if (d < nearest) {
           gains[passed[j].chunk * trials + t] += nearest - d;
           chunks_[passed[j].chunk].moves.push_back({m, uint32_t(t), d});
@@ -247,8 +237,7 @@ class Seeding {
       const uint32_t i = joiners[j].index;
       arena_.index[m] = i;
       arena_.key[m] = arena_.nearest[m] = joiners[j].distance;
-      if (pruned_)
-        arena_.sketch[m] = MakeSketch(Projected(i), Projected(centre), axes_.count, joiners[j].distance, false);
+      arena_.sketch[m] = MakeSketch(Projected(i), Projected(centre), axes_.count, joiners[j].distance, false);
     });
     arena_.used = cell.end;
     cell.potential = SumNearest(cell);
@@ -265,7 +254,7 @@ class Seeding {
         arena_.index[to] = arena_.index[m];
         arena_.key[to] = arena_.key[m];
         arena_.nearest[to] = arena_.nearest[m];
-        if (pruned_) arena_.sketch[to] = arena_.sketch[m];
+        arena_.sketch[to] = arena_.sketch[m];
         ++to;
       }
       cell.begin = begin;
@@ -275,7 +264,6 @@ class Seeding {
   }
 
   const TrainingSet& set_;
-  const bool pruned_;  // plain L2: the bounds hold (a weighted distance measures every vector)
   const bool avx2_;    // the sketch test may use AVX2
   PrincipalAxes axes_;
   HugePageVector<float> projected_;      // every training vector on the axes
@@ -284,23 +272,109 @@ class Seeding {
   std::vector<Chunk> chunks_;  // the last measurement
 };
 
-}  // namespace
+// Greedy k-means++ state for weighted distances. Each vector has its own weights, so no bound is
+// shared between vectors: every vector is measured at every step, in training-set order so the
+// reads stream, all trials in one pass. Sums run per fixed chunk, in order.
+class DenseSeeding {
+ public:
+  DenseSeeding(const TrainingSet& set, uint32_t first_centre)
+      : set_(set), nearest_(set.size()), centre_of_(set.size(), 0), chunks_((set.size() + kChunk - 1) / kChunk) {
+    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
+      for (size_t i = c * kChunk; i < End(c); ++i)
+        nearest_[i] = SquaredDistance(set.Vector(i), set.Vector(first_centre), set.Weights(i), set.dimension);
+      chunks_[c].potential = SumNearest(c);
+    });
+  }
 
-Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials, bool use_simd) {
-  const size_t n = set.size();
-  count = std::min(count, n);
-  trials = std::max(trials, 1);
-  Seeds seeds;
-  seeds.centres = {set.dimension, std::vector<float>(count * set.dimension)};
-  if (count == 0) return seeds;
-  std::mt19937_64 rng(seed);
-  size_t chosen = rng() % n;
-  std::copy_n(set.Vector(chosen), set.dimension, seeds.centres.Codeword(0));
-  Seeding seeding(set, uint32_t(chosen), use_simd);
+  double Potential() const {
+    double sum = 0;
+    for (const Chunk& chunk : chunks_) sum += chunk.potential;
+    return sum;
+  }
+
+  size_t Sample(double unit) const {
+    const double target = unit * Potential();
+    double running = 0;
+    size_t c = 0;
+    while (c + 1 < chunks_.size() && running + chunks_[c].potential <= target) running += chunks_[c++].potential;
+    for (size_t i = c * kChunk; i < nearest_.size(); ++i) {
+      running += nearest_[i];
+      if (running > target && nearest_[i] > 0) return i;
+    }
+    for (size_t i = nearest_.size(); i-- > 0;)  // rounding left the target beyond the last vector
+      if (nearest_[i] > 0) return i;
+    return 0;
+  }
+
+  std::vector<double> Measure(const std::vector<size_t>& candidates) {
+    const size_t trials = candidates.size();
+    std::vector<double> gains(chunks_.size() * trials, 0);
+    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
+      chunks_[c].moves.clear();
+      for (size_t i = c * kChunk; i < End(c); ++i) {
+        const float nearest = nearest_[i];
+        for (size_t t = 0; t < trials; ++t) {
+          const float d = SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), set_.Weights(i), set_.dimension,
+                                          nearest);
+          if (d < nearest) gains[c * trials + t] += nearest - d, chunks_[c].moves.push_back({uint32_t(i), uint32_t(t), d});
+        }
+      }
+    });
+    std::vector<double> potentials(trials, Potential());
+    for (size_t c = 0; c < chunks_.size(); ++c)
+      for (size_t t = 0; t < trials; ++t) potentials[t] -= gains[c * trials + t];
+    return potentials;
+  }
+
+  void Add(size_t t, uint32_t /*centre*/) {
+    ++centres_;
+    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
+      bool changed = false;
+      for (const Move& move : chunks_[c].moves) {
+        if (move.trial != t) continue;
+        nearest_[move.vector] = move.distance;
+        centre_of_[move.vector] = uint32_t(centres_ - 1);
+        changed = true;
+      }
+      if (changed) chunks_[c].potential = SumNearest(c);
+    });
+  }
+
+  void Assignment(std::vector<uint32_t>& nearest, std::vector<float>& distances) const {
+    nearest = centre_of_;
+    distances = nearest_;
+  }
+
+ private:
+  static constexpr size_t kChunk = 4096;
+  struct Move {
+    uint32_t vector, trial;
+    float distance;
+  };
+  struct Chunk {
+    double potential = 0;
+    std::vector<Move> moves;  // of the last measurement
+  };
+
+  size_t End(size_t c) const { return std::min(nearest_.size(), (c + 1) * kChunk); }
+  double SumNearest(size_t c) const {
+    return std::accumulate(nearest_.begin() + c * kChunk, nearest_.begin() + End(c), 0.0);
+  }
+
+  const TrainingSet& set_;
+  std::vector<float> nearest_;      // squared distance of every vector to its nearest centre
+  std::vector<uint32_t> centre_of_;  // and which centre that is
+  std::vector<Chunk> chunks_;
+  size_t centres_ = 1;
+};
+
+// Greedy k-means++ from centre 0 = training vector `chosen` (already in `seeds`), on either state.
+template <class State>
+void Grow(const TrainingSet& set, State& seeding, size_t chosen, std::mt19937_64& rng, int trials, Seeds& seeds) {
   std::vector<size_t> candidates;
-  for (size_t k = 1; k < count; ++k) {
+  for (size_t k = 1; k < seeds.centres.size(); ++k) {
     if (seeding.Potential() <= 0) {  // fewer distinct vectors than codewords: duplicates are harmless
-      chosen = (chosen + 1) % n;
+      chosen = (chosen + 1) % set.size();
       candidates.assign(1, chosen);
     } else {  // the state does not change between trials, so all are drawn first
       candidates.resize(trials);
@@ -313,6 +387,27 @@ Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, in
     seeding.Add(best, uint32_t(chosen));
   }
   seeding.Assignment(seeds.nearest, seeds.distances);
+}
+
+}  // namespace
+
+Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials, bool use_simd) {
+  const size_t n = set.size();
+  count = std::min(count, n);
+  trials = std::max(trials, 1);
+  Seeds seeds;
+  seeds.centres = {set.dimension, std::vector<float>(count * set.dimension)};
+  if (count == 0) return seeds;
+  std::mt19937_64 rng(seed);
+  const size_t chosen = rng() % n;
+  std::copy_n(set.Vector(chosen), set.dimension, seeds.centres.Codeword(0));
+  if (set.weighted()) {
+    DenseSeeding seeding(set, uint32_t(chosen));
+    Grow(set, seeding, chosen, rng, trials, seeds);
+  } else {
+    BoundedSeeding seeding(set, uint32_t(chosen), use_simd);
+    Grow(set, seeding, chosen, rng, trials, seeds);
+  }
   return seeds;
 }
 
