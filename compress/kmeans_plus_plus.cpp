@@ -42,6 +42,25 @@ struct Cell {
   double potential = 0;       // sum of nearest, in order
 };
 
+// The position p of `values` (squared distances, summing to the potential over [0, positions))
+// where the running sum first passes `target` = uniform * potential, never one of value 0: the
+// k-means++ draw. `groups` consecutive runs of positions, given by their sums and first
+// positions, are walked first, so only one run is scanned value by value.
+template <class GroupSum, class GroupBegin>
+size_t DrawPosition(double target, size_t groups, GroupSum group_sum, GroupBegin group_begin, const float* values,
+                    size_t positions) {
+  double running = 0;
+  size_t g = 0;
+  while (g + 1 < groups && running + group_sum(g) <= target) running += group_sum(g++);
+  for (size_t p = groups ? group_begin(g) : 0; p < positions; ++p) {
+    running += values[p];
+    if (running > target && values[p] > 0) return p;
+  }
+  for (size_t p = positions; p-- > 0;)  // rounding left the target beyond the last value
+    if (values[p] > 0) return p;
+  return 0;
+}
+
 // A vector about to join a new cell, with its squared distance to the cell's centre.
 struct Joiner {
   uint32_t index;
@@ -83,19 +102,10 @@ class BoundedSeeding {
 
   // A vector drawn with probability nearest / potential (never one that sits on a centre).
   size_t Sample(double unit) const {
-    const double target = unit * Potential();
-    double running = 0;
-    size_t c = 0;
-    while (c + 1 < cells_.size() && running + cells_[c].potential <= target) running += cells_[c++].potential;
-    for (; c < cells_.size(); ++c) {
-      for (size_t m = cells_[c].begin; m < cells_[c].end; ++m) {
-        running += arena_.nearest[m];
-        if (running > target && arena_.nearest[m] > 0) return arena_.index[m];
-      }
-    }
-    for (size_t m = arena_.used; m-- > 0;)  // rounding left the target beyond the last vector
-      if (arena_.nearest[m] > 0) return arena_.index[m];
-    return 0;
+    const size_t m = DrawPosition(
+        unit * Potential(), cells_.size(), [&](size_t c) { return cells_[c].potential; },
+        [&](size_t c) { return cells_[c].begin; }, arena_.nearest.data(), arena_.used);
+    return arena_.index[m];
   }
 
   // Every vector's centre (cell) and squared distance to it.
@@ -293,17 +303,9 @@ class DenseSeeding {
   }
 
   size_t Sample(double unit) const {
-    const double target = unit * Potential();
-    double running = 0;
-    size_t c = 0;
-    while (c + 1 < chunks_.size() && running + chunks_[c].potential <= target) running += chunks_[c++].potential;
-    for (size_t i = c * kChunk; i < nearest_.size(); ++i) {
-      running += nearest_[i];
-      if (running > target && nearest_[i] > 0) return i;
-    }
-    for (size_t i = nearest_.size(); i-- > 0;)  // rounding left the target beyond the last vector
-      if (nearest_[i] > 0) return i;
-    return 0;
+    return DrawPosition(
+        unit * Potential(), chunks_.size(), [&](size_t c) { return chunks_[c].potential; },
+        [](size_t c) { return c * kChunk; }, nearest_.data(), nearest_.size());
   }
 
   std::vector<double> Measure(const std::vector<size_t>& candidates) {
