@@ -131,10 +131,10 @@ class BoundedSeeding {
     std::vector<size_t> from(cells_.size() * trials);
     std::vector<Sketch> probes(cells_.size() * slots);
     std::vector<float> gaps2(cells_.size() * slots, std::numeric_limits<float>::infinity());
-    chunks_.clear();
-    for (size_t c = 0; c < cells_.size(); ++c) {
+    std::vector<size_t> lowest(cells_.size());  // of the cell's `from`
+    tbb::parallel_for(size_t(0), cells_.size(), [&](size_t c) {
       const Cell& cell = cells_[c];
-      size_t lowest = cell.end;
+      lowest[c] = cell.end;
       for (size_t t = 0; t < trials; ++t) {
         const float gap2 = SquaredDistance(set_.Vector(candidates[t]), set_.Vector(cell.centre), nullptr, dimension);
         // Members with 4 |x - a|^2 < |c - a|^2 (with a margin for rounding) cannot move.
@@ -144,11 +144,13 @@ class BoundedSeeding {
                 arena_.key.begin();
         probes[c * slots + t] = MakeSketch(Projected(candidates[t]), Projected(cell.centre), axes_.count, gap2, true);
         gaps2[c * slots + t] = gap2;
-        lowest = std::min(lowest, first);
+        lowest[c] = std::min(lowest[c], first);
       }
-      for (size_t begin = lowest; begin < cell.end; begin += kChunk)
-        chunks_.push_back({c, begin, std::min(cell.end, begin + kChunk), {}});
-    }
+    });
+    chunks_.clear();
+    for (size_t c = 0; c < cells_.size(); ++c)
+      for (size_t begin = lowest[c]; begin < cells_[c].end; begin += kChunk)
+        chunks_.push_back({c, begin, std::min(cells_[c].end, begin + kChunk), {}});
     std::vector<double> gains(chunks_.size() * trials, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, chunks_.size()), [&](const tbb::blocked_range<size_t>& range) {
       // First every member the bounds cannot rule out, then the measures, in one long run so
