@@ -121,7 +121,6 @@ GlaResult RunLloyd(const TrainingSet& set, const GlaOptions& options, Codebook i
   return result;
 }
 
-
 }  // namespace
 
 CodewordRule ParseCodewordRule(const std::string& name) {

@@ -33,7 +33,6 @@ struct Arena {
   HugePageVector<float> key;       // squared distance to its cell's centre when it joined (sort key)
   HugePageVector<float> nearest;   // the same while it stays; 0 once it has moved on
   HugePageVector<Sketch> sketch;   // relative to its cell's centre
-  size_t used = 0;
 };
 
 struct Cell {
@@ -104,7 +103,7 @@ class BoundedSeeding {
   size_t Sample(double unit) const {
     const size_t m = DrawPosition(
         unit * Potential(), cells_.size(), [&](size_t c) { return cells_[c].potential; },
-        [&](size_t c) { return cells_[c].begin; }, arena_.nearest.data(), arena_.used);
+        [&](size_t c) { return cells_[c].begin; }, arena_.nearest.data(), Used());
     return arena_.index[m];
   }
 
@@ -230,6 +229,9 @@ class BoundedSeeding {
     }
   }
 
+  // Arena members in use: cells lie end to end in the arena.
+  size_t Used() const { return cells_.empty() ? 0 : cells_.back().end; }
+
   const float* Projected(size_t vector) const { return projected_.data() + vector * axes_.count; }
 
   double SumNearest(const Cell& cell) const {
@@ -239,10 +241,10 @@ class BoundedSeeding {
   // Appends a cell for the centre cells_.size() holding `joiners`.
   void AddCell(std::vector<Joiner> joiners, uint32_t centre) {
     tbb::parallel_sort(joiners.begin(), joiners.end());  // a total order: the same result whatever the threads
-    if (arena_.used + joiners.size() > arena_.index.size()) Compact();
+    if (Used() + joiners.size() > arena_.index.size()) Compact();
     Cell cell;
     cell.centre = centre;
-    cell.begin = arena_.used;
+    cell.begin = Used();
     cell.end = cell.begin + joiners.size();
     tbb::parallel_for(size_t(0), joiners.size(), [&](size_t j) {
       const size_t m = cell.begin + j;
@@ -251,7 +253,6 @@ class BoundedSeeding {
       arena_.key[m] = arena_.nearest[m] = joiners[j].distance;
       arena_.sketch[m] = MakeSketch(Projected(i), Projected(centre), axes_.count, joiners[j].distance, false);
     });
-    arena_.used = cell.end;
     cell.potential = SumNearest(cell);
     cells_.push_back(std::move(cell));
   }
@@ -272,7 +273,6 @@ class BoundedSeeding {
       cell.begin = begin;
       cell.end = to;
     }
-    arena_.used = to;
   }
 
   const TrainingSet& set_;

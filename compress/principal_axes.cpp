@@ -25,7 +25,10 @@ PrincipalAxes FindPrincipalAxes(const TrainingSet& set, int count, size_t sample
   result.dimension = d;
   result.count = std::clamp(count, 0, d);
   const size_t n = set.size();
-  if (n == 0 || result.count == 0) return result.count = 0, result;
+  if (n == 0 || result.count == 0) {
+    result.count = 0;
+    return result;
+  }
   const size_t stride = std::max<size_t>(1, n / std::max<size_t>(1, sample));
   const size_t m = (n + stride - 1) / stride;
   Eigen::MatrixXd centred(d, m);

@@ -13,12 +13,11 @@ inline void PrefetchVector(const float* vector, int dimension) {
   for (int offset = 0; offset < int(sizeof(float)) * dimension; offset += 64) __builtin_prefetch(bytes + offset);
 }
 
-namespace detail {
-
-// Eight independent lanes, component i in lane i % 8, folded in a fixed order; `kWeighted`
-// false is the same arithmetic with w = 1 (1 * d is exact), written apart so it vectorizes.
-template <bool kWeighted>
-inline float LaneSquaredDistance(const float* x, const float* c, const float* w, int dimension, float bound) {
+// Components are processed in chunks of 16; after each chunk the running sum is compared with
+// `bound` and the search gives up (returns a value > bound) as soon as it is exceeded: partial
+// distance elimination. With bound = infinity this is the full distance.
+inline float SquaredDistance(const float* x, const float* c, const float* w, int dimension,
+                             float bound = std::numeric_limits<float>::infinity()) {
   float lanes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   auto fold = [&lanes] {
     return ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3])) + ((lanes[4] + lanes[5]) + (lanes[6] + lanes[7]));
@@ -29,16 +28,12 @@ inline float LaneSquaredDistance(const float* x, const float* c, const float* w,
     for (; i + 8 <= end; i += 8) {
       for (int k = 0; k < 8; ++k) {
         const float d = x[i + k] - c[i + k];
-        if constexpr (kWeighted) {
-          lanes[k] += w[i + k] * d * d;
-        } else {
-          lanes[k] += d * d;
-        }
+        lanes[k] += (w ? w[i + k] : 1.f) * d * d;
       }
     }
     for (int k = 0; i < end; ++i, ++k) {  // tail of a dimension that is not a multiple of 8
       const float d = x[i] - c[i];
-      lanes[k] += (kWeighted ? w[i] : 1.f) * d * d;
+      lanes[k] += (w ? w[i] : 1.f) * d * d;
     }
     if (i < dimension) {
       const float partial = fold();
@@ -46,17 +41,6 @@ inline float LaneSquaredDistance(const float* x, const float* c, const float* w,
     }
   }
   return fold();
-}
-
-}  // namespace detail
-
-// Components are processed in chunks of 16; after each chunk the running sum is compared with
-// `bound` and the search gives up (returns a value > bound) as soon as it is exceeded: partial
-// distance elimination. With bound = infinity this is the full distance.
-inline float SquaredDistance(const float* x, const float* c, const float* w, int dimension,
-                             float bound = std::numeric_limits<float>::infinity()) {
-  return w ? detail::LaneSquaredDistance<true>(x, c, w, dimension, bound)
-           : detail::LaneSquaredDistance<false>(x, c, nullptr, dimension, bound);
 }
 
 }  // namespace voltree
