@@ -1,5 +1,6 @@
 // voltree eval DIR: render the asset at the held-out truth cameras and at the input cameras,
 // compare, and write DIR/report/{metrics.json,index.html,eval/}.
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -45,6 +46,9 @@ void AddEvalCommand(CLI::App& app) {
   command->add_option("--scene-bench", args->scene_bench,
                       "JSON of ms per frame per number of trees to plot (default: REPORT/scene_bench.json when it "
                       "exists)");
+  command->add_flag("--budget", o.budget,
+                    "Also measure what each step costs (the volume, uncompressed billboards, VQ, DXT5, the LOD) at the "
+                    "input and held-out views; needs DIR/volume; adds a table to the report and metrics.json");
   command->add_flag("--force", o.force,
                     "Replace REPORT/metrics.json, index.html or eval/ even when they were not written by eval "
                     "(default: only eval's own earlier report is replaced)");
@@ -63,6 +67,7 @@ void AddEvalCommand(CLI::App& app) {
     Progress progress(args->quiet);
     const EvaluateResult result = EvaluateWorkspace(options, progress);
     PrintEvaluation(result);
+    if (!result.budget.empty()) std::printf("\nerror budget\n%s", BudgetTable(result.budget).c_str());
   });
 }
 

@@ -19,6 +19,7 @@ void AddReconstructCommand(CLI::App& app) {
     std::string dir;
     ReconstructOptions options;
     std::string solver = "sart";
+    bool no_fit = false;
     bool force = false;
     bool quiet = false;
   };
@@ -47,6 +48,19 @@ void AddReconstructCommand(CLI::App& app) {
                       "Refine a cell only when sigma x cell edge (its optical depth) reaches this")
       ->capture_default_str();
   command->add_option("--billboard-scale", o.billboard_scale, "Billboard side / cell edge")->capture_default_str();
+  command->add_flag("--no-fit", args->no_fit,
+                    "Keep the tomography's billboards as they are: do not fit them to the photos (to compare)");
+  command->add_option("--fit-iterations", o.fit.iterations, "Gauss-Newton steps of the billboard fit per level and view")
+      ->capture_default_str();
+  command->add_option("--fit-prior", o.fit.prior,
+                      "How strongly the fit keeps the tomography's texels where the photos do not decide")
+      ->capture_default_str();
+  command->add_option("--fit-neighbours", o.fit.neighbours,
+                      "Also fit each view's billboards to this many nearest photos, where the renderer blends them")
+      ->capture_default_str();
+  command->add_option("--fit-neighbour-weight", o.fit.neighbour_weight,
+                      "Weight of each neighbouring photo against the view's own in the billboard fit")
+      ->capture_default_str();
   command->add_option("--threads", o.threads, "Worker threads (0: all cores); the output does not depend on it")
       ->capture_default_str();
   command->add_flag("--force", args->force, "Replace an existing DIR/volume");
@@ -58,6 +72,7 @@ void AddReconstructCommand(CLI::App& app) {
       args->options.solver = SolverKind::kCeres;
     else
       Fail("--solver must be sart or ceres, got '", args->solver, "'");
+    args->options.fit.enabled = !args->no_fit;
     Progress progress(args->quiet);
     ReconstructWorkspace(args->dir, args->options, args->force, &progress);
   });

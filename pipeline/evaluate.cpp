@@ -259,6 +259,11 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
       for (size_t c = 0; c < choices.size(); ++c)
         result.table.Add(choices[c], sets[s].first, (*sets[s].second)[v].camera.name, results[s][v].per_choice[c]);
 
+  if (options.budget) {
+    result.budget = MeasureErrorBudget(workspace, asset, held_out ? *held_out : no_views, inputs, options.metrics,
+                                       progress);
+    AppendLodRows(result.table, &result.budget);
+  }
   const PruningStats pruning = ReadPruningStats(workspace, asset, asset_path);
   if (options.plots) {
     for (const std::string& file : DrawPlots(PlotSpecs(result.table, pruning, options, report),
@@ -292,6 +297,14 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
                      {"levels", asset.levels.size()}};
   doc["view_counts"] = {{"held_out", held_out ? held_out->size() : 0}, {"input", inputs.size()}};
   doc["truth_alignment"] = AlignmentJson(result.alignment);
+  if (!result.budget.empty()) {
+    nlohmann::json budget = nlohmann::json::array();
+    for (const BudgetRow& row : result.budget)
+      budget.push_back({{"step", row.step}, {"views", ViewSetName(row.set)}, {"count", row.views},
+                        {"rgb_psnr", Finite(row.rgb_psnr)}, {"alpha_psnr", Finite(row.alpha_psnr)},
+                        {"precision", row.precision}, {"recall", row.recall}});
+    doc["budget"] = budget;
+  }
   nlohmann::json pruning_json = nlohmann::json::array();
   for (const LevelPruning& level : pruning.levels)
     pruning_json.push_back({{"level", level.level},
@@ -339,6 +352,7 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   page.difference_gain = options.difference_gain;
   for (const std::string& plot : result.plots) page.plots.push_back({plot, fs::path(plot).stem().string()});
   page.thumbnails = OrbitThumbnails(report, 12);
+  page.budget = result.budget;
   page.links.push_back({kMetricsJsonName, "metrics.json (every view, every level)"});
   if (fs::exists(report / "contact_sheet.png")) page.links.push_back({"contact_sheet.png", "contact sheet of the input photos"});
   if (!page.thumbnails.empty()) page.links.push_back({"orbit/", "orbit frames"});

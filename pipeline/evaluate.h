@@ -15,6 +15,7 @@
 
 #include "core/image_metrics.h"
 #include "core/progress.h"
+#include "pipeline/error_budget.h"
 #include "pipeline/evaluation_levels.h"
 #include "pipeline/evaluation_truth.h"
 #include "render/lod.h"
@@ -33,6 +34,7 @@ struct EvaluateOptions {
   bool input_views = true;        // also compare at the input cameras (self-consistency)
   bool images = true;             // side-by-side PNGs of the held-out views
   bool plots = true;              // gnuplot PNGs (skipped with a note when gnuplot is missing)
+  bool budget = false;            // also measure the error budget (error_budget.h; needs WORKSPACE/volume)
   float difference_gain = 4;      // the difference images show |truth - render| x gain
   // Optional measured series for plots; empty: REPORT/codebook_sweep.json, REPORT/scene_bench.json
   // when they exist (formats in docs/evaluate.md).
@@ -51,6 +53,7 @@ struct EvaluateOptions {
 
 struct EvaluateResult {
   LevelMetricsTable table;
+  std::vector<BudgetRow> budget;  // with options.budget
   std::optional<TruthAlignment> alignment;  // when the truth was moved into the workspace's frame
   std::filesystem::path metrics_json, index_html;
   std::vector<std::string> plots;  // drawn, relative to the report folder

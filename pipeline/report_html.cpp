@@ -81,6 +81,21 @@ std::string ReportHtml(const ReportPage& page) {
   }
   html << "</table>\n";
 
+  if (!page.budget.empty()) {
+    html << "<h2>Error budget</h2>\n<p>What each step costs (eval --budget): <em>volume</em> is the finest level's "
+            "densities ray-marched (alpha only); <em>billboards</em> its uncompressed billboards drawn as the renderer "
+            "draws them (CPU); <em>vq</em> with the codewords; <em>dxt5</em> as fetched from the atlas; <em>lod</em> "
+            "the asset drawn by the GPU with its level of detail.</p>\n";
+    html << "<table><tr><th>step</th><th>views</th><th>count</th><th>RGB PSNR</th><th>alpha PSNR</th><th>P</th>"
+            "<th>R</th></tr>\n";
+    for (const BudgetRow& row : page.budget)
+      html << "<tr><td>" << HtmlEscape(row.step) << "</td><td>" << ViewSetName(row.set) << "</td><td>" << row.views
+           << "</td><td>" << (std::isnan(row.rgb_psnr) ? "&ndash;" : Fixed(row.rgb_psnr, 2)) << "</td><td>"
+           << Fixed(row.alpha_psnr, 2) << "</td><td>" << Fixed(row.precision, 3) << "</td><td>"
+           << Fixed(row.recall, 3) << "</td></tr>\n";
+    html << "</table>\n";
+  }
+
   html << "<h2>Per level</h2>\n<p><em>auto</em> is the renderer's LOD; a number draws only that octree level.</p>\n";
   html << "<table><tr><th>level</th><th>views</th>" << kMetricHeader << "<th>pruned %</th></tr>\n";
   for (const LevelChoice& choice : table.choices()) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/image_metrics.h"
+#include "pipeline/error_budget.h"
 #include "pipeline/evaluation_levels.h"
 
 namespace voltree {
@@ -35,6 +36,7 @@ struct ReportPage {
   std::vector<HtmlLink> plots;                             // PNG files
   std::vector<HtmlLink> links;                             // contact sheet, orbit frames, metrics.json
   std::vector<std::string> thumbnails;                     // a strip of orbit frames, when present
+  std::vector<BudgetRow> budget;                           // eval --budget: what each step costs
 };
 
 // "&<>\"'" escaped.

@@ -28,7 +28,7 @@ struct OpacityOptions {
   CeresSolveOptions ceres;
   // A cell is refined when sigma * cell edge (its optical depth) reaches this; below it the cell
   // is practically transparent (alpha < 0.2 %).
-  double refine_min_optical_depth = 0.002;
+  double refine_min_optical_depth = 0;  // 0: refine every cell the visual hull keeps
 };
 
 struct OpacityLevel {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/fixed.h"
 #include "reconstruct/carve.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
@@ -55,6 +56,7 @@ void ReconstructOptions::Check() const {
   if (!(samples_per_cell > 0)) Fail("samples per cell must be positive");
   if (!(epsilon > 0 && epsilon < 1)) Fail("epsilon must be in (0, 1)");
   if (!(billboard_scale > 0)) Fail("billboard scale must be positive");
+  fit.Check();
 }
 
 nlohmann::json ReconstructOptions::ToJson() const {
@@ -72,7 +74,11 @@ nlohmann::json ReconstructOptions::ToJson() const {
           {"refine_min_optical_depth", refine_min_optical_depth},
           {"samples_per_cell", samples_per_cell},
           {"epsilon", epsilon},
-          {"billboard_scale", billboard_scale}};
+          {"billboard_scale", billboard_scale},
+          {"fit", fit.enabled ? nlohmann::json{{"iterations", fit.iterations},
+                                               {"prior", fit.prior},
+                                               {"alpha_weight", fit.alpha_weight}}
+                              : nlohmann::json(false)}};
 }
 
 size_t AvailableMemoryBytes() {
@@ -229,12 +235,26 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& opti
     billboards.prune = options.prune;
     billboards.scale = options.billboard_scale;
     billboards.epsilon = options.epsilon;
-    MakeBillboards(input.views, mattes, input.foreground.empty() ? white : input.foreground, billboards, &volume,
-                   progress);
+    const std::vector<Image8>& foreground = input.foreground.empty() ? white : input.foreground;
+    MakeBillboards(input.views, mattes, foreground, billboards, &volume, progress);
     if (stats) {
       stats->billboard_seconds = std::chrono::duration<double>(Clock::now() - billboard_start).count();
       for (const VolumeLevel& level : volume.levels)
         stats->texel_rays += level.cells.size() * input.views.size() * size_t(options.texels) * options.texels;
+    }
+    if (options.fit.enabled) {
+      BillboardFitOptions fit = options.fit;
+      fit.billboard_scale = options.billboard_scale;
+      const BillboardFitReport report = FitBillboards(input.views, input.mattes, foreground, fit, &volume, progress);
+      if (progress) {
+        for (const BillboardFitLevel& l : report.levels)
+          progress->Say("fit", Str("level ", l.level, " (1/", FixedDecimals(l.scale, 1), " scale): alpha PSNR ",
+                                   FixedDecimals(l.alpha_psnr_before, 2), " -> ", FixedDecimals(l.alpha_psnr_after, 2),
+                                   " dB, RGB ", FixedDecimals(l.rgb_psnr_before, 2), " -> ",
+                                   FixedDecimals(l.rgb_psnr_after, 2), " dB at the input views"));
+        for (const std::string& warning : report.warnings) progress->Say("fit", "warning: " + warning);
+      }
+      if (stats) stats->fit = report;
     }
   });
   if (progress)

@@ -12,6 +12,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/progress.h"
+#include "reconstruct/billboard_fit.h"
 #include "reconstruct/billboards.h"
 #include "reconstruct/opacity.h"
 #include "reconstruct/volume.h"
@@ -30,10 +31,12 @@ struct ReconstructOptions {
   int threads = 0;            // 0: all cores
   double margin = 0.05;       // root cube = bounds' cube grown by this fraction of its edge per side
   double carve_alpha = 0.02;  // pixels at or below this alpha are empty for carving
-  double refine_min_optical_depth = 0.002;
+  double refine_min_optical_depth = 0;  // 0: refine every cell the visual hull keeps
   double samples_per_cell = 2;
   double epsilon = 1e-3;
   double billboard_scale = 1.0;
+  BillboardFitOptions fit;    // billboards fitted to the photos after the tomography (fit.billboard_scale is
+                              // ignored: billboard_scale above is used)
   size_t max_stored_bytes = size_t(1) << 30;  // larger ray systems are streamed
   size_t memory_limit_bytes = 0;              // 0: the memory available now (/proc/meminfo)
 
@@ -65,6 +68,7 @@ struct ReconstructStats {
   size_t ray_passes = 0;    // sum over levels of rays x solver iterations
   size_t texel_rays = 0;    // billboard texel rays traced
   std::vector<OpacityLevelReport> levels;
+  BillboardFitReport fit;  // empty levels when the fit is off
 };
 
 Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& options, Progress* progress,
