@@ -24,7 +24,7 @@ void AddDemoCommand(CLI::App& app) {
   struct Arguments {
     DemoOptions options;
     std::string output = "out/demo", size = "512x512", up = "y";
-    bool no_eval = false, quiet = false;
+    bool no_eval = false, no_fit = false, quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   DemoOptions& o = args->options;
@@ -44,6 +44,8 @@ void AddDemoCommand(CLI::App& app) {
   command->add_option("--orbit", o.orbit.frames, "Orbit frames rendered into report/orbit/ (0: none)")
       ->capture_default_str();
   command->add_option("--orbit-size", o.orbit.size, "Orbit frame side in pixels (square)")->capture_default_str();
+  command->add_flag("--no-fit", args->no_fit,
+                    "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)");
   command->add_flag("--no-eval", args->no_eval, "Skip the evaluation report (default: evaluate)");
   command->add_flag("--colmap", o.colmap,
                     "Calibrate the photos with COLMAP (SIFT on the CPU, about a minute) instead of using the studio's "
@@ -61,6 +63,7 @@ void AddDemoCommand(CLI::App& app) {
     if (!up) Fail("--up '", args->up, "': expected y or z");
     options.tree.up = *up;
     options.evaluate = !args->no_eval;
+    options.reconstruct.fit.enabled = !args->no_fit;
     // At 5 degrees half of the photos fail to register (bench/calibrate.cpp); 20 registers all.
     if (options.colmap) options.studio.min_elevation_degrees = std::max(options.studio.min_elevation_degrees, 20.0);
     Progress progress(args->quiet);

@@ -22,7 +22,7 @@ void AddRunCommand(CLI::App& app) {
   struct Arguments {
     std::string dir, refine = "infoflow", camera_model = "SIMPLE_RADIAL", matcher = "exhaustive", eval_levels = "all";
     RunOptions options;
-    bool quiet = false;
+    bool no_fit = false, quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   RunOptions& o = args->options;
@@ -41,6 +41,8 @@ void AddRunCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--levels", o.reconstruct.levels, "Octree levels (level L has 2^L cells per axis)")
       ->capture_default_str();
+  command->add_flag("--no-fit", args->no_fit,
+                    "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)");
   command->add_option("--codebook", o.compress.colour_codebook, "Colour codebook size")->capture_default_str();
   command->add_option("--alpha-codebook", o.compress.alpha_codebook, "Alpha codebook size")->capture_default_str();
   command->add_option("--orbit", o.orbit.frames, "Orbit frames rendered into DIR/report/orbit/")->capture_default_str();
@@ -56,6 +58,7 @@ void AddRunCommand(CLI::App& app) {
   command->callback([args] {
     RunOptions options = args->options;
     options.workspace = args->dir;
+    options.reconstruct.fit.enabled = !args->no_fit;
     options.matte.matte.refine = ParseRefineMethod(args->refine);
     options.calibrate.camera_model = args->camera_model;
     options.calibrate.matcher = args->matcher;
