@@ -22,6 +22,7 @@ void AddDemoCommand(CLI::App& app) {
       "report/contact_sheet.png and demo.json (timings per stage, sizes, headline metrics); prints the metrics "
       "table and the path of report/index.html");
   struct Arguments {
+    std::string levels = "7";
     DemoOptions options;
     std::string output = "out/demo", size = "512x512", up = "y";
     bool no_eval = false, no_fit = false, quiet = false;
@@ -37,7 +38,8 @@ void AddDemoCommand(CLI::App& app) {
   command->add_option("--views", o.studio.views, "Input photos")->capture_default_str();
   command->add_option("--held-out", o.studio.held_out, "Held-out truth views")->capture_default_str();
   command->add_option("--size", args->size, "Photo size WIDTHxHEIGHT")->capture_default_str();
-  command->add_option("--levels", o.reconstruct.levels, "Octree levels (level L has 2^L cells per axis)")
+  command->add_option("--levels", args->levels,
+                      "Hierarchy levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as the photos fill (a finest texel covers about one photo pixel)")
       ->capture_default_str();
   command->add_option("--codebook", o.compress.colour_codebook, "Colour codebook size")->capture_default_str();
   command->add_option("--alpha-codebook", o.compress.alpha_codebook, "Alpha codebook size")->capture_default_str();
@@ -64,6 +66,9 @@ void AddDemoCommand(CLI::App& app) {
     options.tree.up = *up;
     options.evaluate = !args->no_eval;
     options.reconstruct.fit.enabled = !args->no_fit;
+    options.reconstruct.levels = ParseLevels("--levels", args->levels);
+    options.reconstruct.auto_levels = options.reconstruct.levels == 0;
+    if (options.reconstruct.auto_levels) options.reconstruct.levels = 7;  // replaced once the photos are read
     // At 5 degrees half of the photos fail to register (bench/calibrate.cpp); 20 registers all.
     if (options.colmap) options.studio.min_elevation_degrees = std::max(options.studio.min_elevation_degrees, 20.0);
     Progress progress(args->quiet);

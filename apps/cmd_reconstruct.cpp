@@ -3,6 +3,7 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "apps/option_parsing.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "reconstruct/workspace.h"
@@ -16,6 +17,7 @@ void AddReconstructCommand(CLI::App& app) {
       "DIR/scene.json (bounds), make billboard textures from DIR/foreground for every level, cell and view, "
       "prune hidden ones, and write DIR/volume/ (volume.json + volume.bin)");
   struct Arguments {
+    std::string levels = "7";
     std::string dir;
     ReconstructOptions options;
     std::string solver = "sart";
@@ -26,7 +28,8 @@ void AddReconstructCommand(CLI::App& app) {
   auto args = std::make_shared<Arguments>();
   ReconstructOptions& o = args->options;
   command->add_option("DIR", args->dir, "Capture workspace (sparse/, mattes/, foreground/, scene.json)")->required();
-  command->add_option("--levels", o.levels, "Hierarchy levels: level 0 is the root, the finest has branching^(levels-1) cells per axis")
+  command->add_option("--levels", args->levels,
+                      "Hierarchy levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as the photos fill (a finest texel covers about one photo pixel)")
       ->capture_default_str();
   command->add_option("--branching", o.branching, "Cells per axis per subdivision: 2 (octree) or 3 (tri-grid, Reche 2004)")
       ->capture_default_str();
@@ -73,6 +76,9 @@ void AddReconstructCommand(CLI::App& app) {
     else
       Fail("--solver must be sart or ceres, got '", args->solver, "'");
     args->options.fit.enabled = !args->no_fit;
+    args->options.levels = ParseLevels("--levels", args->levels);
+    args->options.auto_levels = args->options.levels == 0;
+    if (args->options.auto_levels) args->options.levels = 7;  // replaced once the photos are read
     Progress progress(args->quiet);
     ReconstructWorkspace(args->dir, args->options, args->force, &progress);
   });

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "apps/option_parsing.h"
 #include "apps/eval_table.h"
 #include "core/progress.h"
 #include "pipeline/run_workspace.h"
@@ -20,6 +21,7 @@ void AddRunCommand(CLI::App& app) {
       "eval (DIR/report/index.html: held-out views when DIR/truth/ exists, else the input views only, which "
       "measures self-consistency). Prints each stage's time and the evaluation table");
   struct Arguments {
+    std::string levels = "7";
     std::string dir, refine = "infoflow", camera_model = "SIMPLE_RADIAL", matcher = "exhaustive", eval_levels = "all";
     RunOptions options;
     bool no_fit = false, quiet = false;
@@ -39,7 +41,8 @@ void AddRunCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--matcher", args->matcher, "COLMAP matcher: exhaustive, or sequential for photos in a walk")
       ->capture_default_str();
-  command->add_option("--levels", o.reconstruct.levels, "Octree levels (level L has 2^L cells per axis)")
+  command->add_option("--levels", args->levels,
+                      "Hierarchy levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as the photos fill (a finest texel covers about one photo pixel)")
       ->capture_default_str();
   command->add_flag("--no-fit", args->no_fit,
                     "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)");
@@ -59,6 +62,9 @@ void AddRunCommand(CLI::App& app) {
     RunOptions options = args->options;
     options.workspace = args->dir;
     options.reconstruct.fit.enabled = !args->no_fit;
+    options.reconstruct.levels = ParseLevels("--levels", args->levels);
+    options.reconstruct.auto_levels = options.reconstruct.levels == 0;
+    if (options.reconstruct.auto_levels) options.reconstruct.levels = 7;  // replaced once the photos are read
     options.matte.matte.refine = ParseRefineMethod(args->refine);
     options.calibrate.camera_model = args->camera_model;
     options.calibrate.matcher = args->matcher;

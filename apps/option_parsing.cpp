@@ -17,6 +17,14 @@ std::pair<int, int> ParseSize(const std::string& option, const std::string& text
   return {width, height};
 }
 
+int ParseLevels(const std::string& option, const std::string& text) {
+  if (text == "auto") return 0;
+  static const std::regex kCount(R"(\d{1,2})");
+  if (!std::regex_match(text, kCount) || std::stoi(text) < 1)
+    Fail(option, " '", text, "': expected a number of levels (e.g. 7) or auto");
+  return std::stoi(text);
+}
+
 std::vector<double> ParseNumbers(const std::string& option, const std::string& text) {
   std::vector<double> numbers;
   std::stringstream in(text);

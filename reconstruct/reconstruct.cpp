@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/fixed.h"
+#include "reconstruct/auto_levels.h"
 #include "reconstruct/carve.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
@@ -182,9 +183,13 @@ void CheckReconstructInput(const ReconstructInput& input, const ReconstructOptio
          Gigabytes(need), " of memory, but only ", Gigabytes(available), " is available; use fewer --levels");
 }
 
-Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& options, Progress* progress,
+Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requested, Progress* progress,
                    ReconstructStats* stats) {
   using Clock = std::chrono::steady_clock;
+  requested.Check();
+  const ReconstructOptions options = ResolveLevels(input, requested);
+  if (requested.auto_levels && progress)
+    progress->Say("reconstruct", Str("--levels auto: ", options.levels, " levels (the finest texel about one photo pixel)"));
   options.Check();
   CheckReconstructInput(input, options);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);

@@ -21,6 +21,7 @@ namespace voltree {
 
 struct ReconstructOptions {
   int levels = 7;             // level 0 = root ... levels-1 (64^3 cells for 7 levels of an octree)
+  bool auto_levels = false;   // levels from the photos instead (auto_levels.h): a finest texel ~ one pixel
   int branching = 2;          // 2: octree, 3: tri-grid (Reche 2004)
   int texels = 4;             // billboards are texels x texels (8 for Reche 2004)
   double prune = 0.95;        // accumulated alpha in front above which a texel is hidden

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "reconstruct/auto_levels.h"
 #include "reconstruct/carve.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
@@ -164,7 +165,9 @@ Volume ReconstructWorkspace(const fs::path& dir, const ReconstructOptions& optio
   CheckCanReplaceFolder(out, force);
   const ReconstructInput input = LoadReconstructInput(dir, options, progress);
   Volume volume = Reconstruct(input, options, progress);
-  WriteVolume(out, volume, {{"stage", "reconstruct"}, {"options", options.ToJson()}}, force);
+  nlohmann::json recorded = ResolveLevels(input, options).ToJson();
+  if (options.auto_levels) recorded["levels_auto"] = true;
+  WriteVolume(out, volume, {{"stage", "reconstruct"}, {"options", recorded}}, force);
   if (progress) progress->Say("reconstruct", Str("wrote ", out.string()));
   return volume;
 }

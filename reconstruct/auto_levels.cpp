@@ -1,0 +1,45 @@
+#include "reconstruct/auto_levels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "reconstruct/grid.h"
+
+namespace voltree {
+
+int LevelsForPhotos(const ReconstructInput& input, const ReconstructOptions& options) {
+  if (input.views.empty()) Fail(input.source, ": no views to choose --levels auto from");
+  const GridFrame frame = RootCube(input.bounds_min, input.bounds_max, options.margin, options.branching);
+  const Eigen::Vector3d centre = frame.origin + Eigen::Vector3d::Constant(0.5 * frame.size);
+  // Root texel size in photo pixels, per view; the median view decides.
+  std::vector<double> root_texel_pixels;
+  for (const View& view : input.views) {
+    const double depth = view.pose.ToCamera(centre).z();
+    if (!(depth > 0)) continue;
+    const double focal = 0.5 * (view.camera.FocalX() + view.camera.FocalY());
+    root_texel_pixels.push_back(focal * frame.size / options.texels / depth);
+  }
+  if (root_texel_pixels.empty()) Fail(input.source, ": no photo sees the scene bounds in front of it");
+  std::nth_element(root_texel_pixels.begin(), root_texel_pixels.begin() + root_texel_pixels.size() / 2,
+                   root_texel_pixels.end());
+  const double root = root_texel_pixels[root_texel_pixels.size() / 2];
+  // Smallest L with root / branching^L <= 1 pixel.
+  const int finest = std::max(0, int(std::ceil(std::log(root) / std::log(double(options.branching)) - 1e-9)));
+  const int levels = finest + 1;
+  const int largest = options.branching == 2 ? 16 : 10;  // 16-bit cell coordinates
+  if (levels < 3)
+    Fail(input.source, ": the photos (", input.views.front().camera.width, "x", input.views.front().camera.height,
+         ") show the tree about ", int(std::lround(root * options.texels)), " pixels across: too small for even 3 ",
+         "levels of ", options.texels, "x", options.texels, " texels (--levels auto gives ", levels,
+         "); use larger photos or give --levels N");
+  return std::min(levels, largest);
+}
+
+ReconstructOptions ResolveLevels(const ReconstructInput& input, const ReconstructOptions& options) {
+  ReconstructOptions resolved = options;
+  if (options.auto_levels) resolved.levels = LevelsForPhotos(input, options);
+  return resolved;
+}
+
+}  // namespace voltree
