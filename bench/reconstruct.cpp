@@ -1,6 +1,6 @@
 // Reconstruct benchmark: time, peak memory, rays per second, 1 vs 2 threads, octree vs tri-grid.
 // Each configuration runs in a forked child so that ru_maxrss is its own peak.
-//   voltree-bench-reconstruct [--workspace DIR] [--levels 7] [--trigrid-levels 5] [--threads 1,2]
+//   voltree-bench-reconstruct [--workspace DIR] [--levels 7] [--trigrid-levels 5] [--threads 1,2] [--no-fit]
 // Without --workspace it uses a synthetic phantom (24 views x --size^2, leafy blobs on a 64^3 grid).
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -22,7 +22,7 @@ namespace {
 using namespace voltree;
 
 struct Row {
-  double load_s = 0, solve_s = 0, billboard_s = 0, total_s = 0;
+  double load_s = 0, solve_s = 0, billboard_s = 0, fit_s = 0, total_s = 0;
   double ray_passes = 0, texel_rays = 0;
   double finest_cells = 0, before = 0, after = 0;
   int ok = 0;
@@ -92,6 +92,7 @@ Row RunOne(const std::string& workspace, ReconstructOptions options, int size) {
     row.total_s = std::chrono::duration<double>(Clock::now() - loaded).count();
     row.solve_s = stats.solve_seconds;
     row.billboard_s = stats.billboard_seconds;
+    row.fit_s = stats.fit.seconds;
     row.ray_passes = double(stats.ray_passes);
     row.texel_rays = double(stats.texel_rays);
     row.finest_cells = double(volume.levels.back().cells.size());
@@ -142,14 +143,16 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "Phantom image size (pixels per side)")->capture_default_str();
   app.add_option("--texels", texels, "Texels per billboard side")->capture_default_str();
   app.add_option("--threads", threads, "Thread counts to compare")->delimiter(',');
+  bool no_fit = false;
+  app.add_flag("--no-fit", no_fit, "Leave out the billboard fit (the tomography's billboards as they are)");
   CLI11_PARSE(app, argc, argv);
 
   if (workspace.empty())
     std::printf("input: synthetic phantom, 24 views x %d^2\n", size);
   else
     std::printf("input: %s\n", workspace.c_str());
-  std::printf("%-9s %6s %7s %7s %8s %8s %8s %9s %12s %12s %9s %11s %11s %7s\n", "grid", "levels", "threads", "load_s",
-              "solve_s", "bboard_s", "total_s", "peak_MB", "ray_passes/s", "texel_rays/s", "cells", "bb_before",
+  std::printf("%-9s %6s %7s %7s %8s %8s %7s %8s %9s %12s %12s %9s %11s %11s %7s\n", "grid", "levels", "threads", "load_s",
+              "solve_s", "bboard_s", "fit_s", "total_s", "peak_MB", "ray_passes/s", "texel_rays/s", "cells", "bb_before",
               "bb_after", "pruned");
   struct Config {
     int branching, levels;
@@ -164,6 +167,7 @@ int main(int argc, char** argv) {
       options.threads = t;
       options.iterations = iterations;
       options.texels = texels;
+      options.fit.enabled = !no_fit;
       double peak_mb = 0;
       const Row row = RunForked(workspace, options, size, &peak_mb);
       if (!row.ok) {
@@ -171,9 +175,9 @@ int main(int argc, char** argv) {
                     row.error);
         continue;
       }
-      std::printf("%-9s %6d %7d %7.2f %8.2f %8.2f %8.2f %9.0f %12.3g %12.3g %9.0f %11.0f %11.0f %6.1f%%\n",
+      std::printf("%-9s %6d %7d %7.2f %8.2f %8.2f %7.2f %8.2f %9.0f %12.3g %12.3g %9.0f %11.0f %11.0f %6.1f%%\n",
                   config.branching == 2 ? "octree" : "tri-grid", config.levels, t, row.load_s, row.solve_s,
-                  row.billboard_s, row.total_s, peak_mb, row.ray_passes / std::max(row.solve_s, 1e-9),
+                  row.billboard_s, row.fit_s, row.total_s, peak_mb, row.ray_passes / std::max(row.solve_s, 1e-9),
                   row.texel_rays / std::max(row.billboard_s, 1e-9), row.finest_cells, row.before, row.after,
                   100.0 * (row.before - row.after) / std::max(row.before, 1.0));
       std::fflush(stdout);
