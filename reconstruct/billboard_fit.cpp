@@ -87,6 +87,7 @@ struct FitImage {
   LayerImage layers;
   ImageF target;
   float weight = 1;
+  double scale = 1;  // photo pixels per pixel of `target`
 };
 
 // The objective at x (premultiplied RGBA floats, four per texel); with `gradient` and `diagonal`
@@ -192,7 +193,7 @@ double Psnr(double sse, double count) { return sse <= 0 ? 99.0 : 10 * std::log10
 
 struct JobResult {
   double scale = 1;
-  size_t layers = 0, pixels = 0, rgb_count = 0;
+  size_t layers = 0, pixels = 0;
   Objective::Value before, after;
   bool diverged = false;
 };
@@ -213,21 +214,44 @@ std::vector<int> NeighbourViews(const Volume& volume, int v, int count) {
   return out;
 }
 
-// Fits view v's billboards of one level; writes them into `texels` (the level's, as floats).
-JobResult FitOneView(const Volume& volume, int level, int v, const std::vector<View>& views,
-                     const std::vector<ImageF>& photos, const BillboardFitOptions& options,
-                     std::vector<float>* texels) {
-  JobResult result;
-  const bool finest = level + 1 == int(volume.levels.size());
-  // The view's texels, numbered locally so the work buffers hold only this view's billboards.
-  const VolumeLevel& cells = volume.levels[level];
-  const size_t per_billboard = size_t(volume.texels) * volume.texels;
-  std::vector<uint32_t> global;  // local billboard -> level billboard
-  std::vector<uint32_t> local(cells.billboards.size(), 0);
-  for (uint32_t b = 0; b < cells.billboards.size(); ++b)
-    if (cells.billboards[b].view == v) local[b] = uint32_t(global.size()), global.push_back(b);
+// The billboards of one view at one level, numbered locally so that the work buffers hold only
+// those: level billboard `global[i]` is local billboard i.
+struct ViewBillboards {
+  std::vector<uint32_t> global;
+  std::vector<uint32_t> local;  // level billboard -> local index (meaningful for this view's only)
+  size_t per_billboard = 16;    // texels per billboard
 
-  // The own photo, then the neighbours': the view's billboards are drawn (blended) near them too.
+  ViewBillboards(const Volume& volume, int level, int v)
+      : local(volume.levels[level].billboards.size(), 0), per_billboard(size_t(volume.texels) * volume.texels) {
+    const auto& billboards = volume.levels[level].billboards;
+    for (uint32_t b = 0; b < billboards.size(); ++b)
+      if (billboards[b].view == v) local[b] = uint32_t(global.size()), global.push_back(b);
+  }
+  // Rewrites the taps of `layers` (which draw only this view) to local texel indices.
+  void Renumber(LayerImage* layers) const {
+    for (BillboardLayer& layer : layers->layers)
+      for (BillboardTap& tap : layer.taps)
+        if (tap.weight != 0)
+          tap.texel = uint32_t(local[tap.texel / per_billboard] * per_billboard + tap.texel % per_billboard);
+  }
+  std::vector<float> Gather(const std::vector<float>& level_texels) const {
+    std::vector<float> x(global.size() * per_billboard * 4);
+    for (size_t b = 0; b < global.size(); ++b)
+      std::copy_n(level_texels.data() + global[b] * per_billboard * 4, per_billboard * 4, x.data() + b * per_billboard * 4);
+    return x;
+  }
+  void Scatter(const std::vector<float>& x, std::vector<float>* level_texels) const {
+    for (size_t b = 0; b < global.size(); ++b)
+      std::copy_n(x.data() + b * per_billboard * 4, per_billboard * 4, level_texels->data() + global[b] * per_billboard * 4);
+  }
+};
+
+// The photos view v's billboards of `level` are compared with: its own, then its neighbours'
+// (the renderer blends the view's billboards near them too).
+std::vector<FitImage> FitImages(const Volume& volume, int level, int v, const std::vector<View>& views,
+                                const std::vector<ImageF>& photos, const BillboardFitOptions& options,
+                                const ViewBillboards& billboards) {
+  const bool finest = level + 1 == int(volume.levels.size());
   std::vector<int> seen_from = {v};
   for (int u : NeighbourViews(volume, v, options.neighbours)) seen_from.push_back(u);
   std::vector<FitImage> images;
@@ -240,53 +264,61 @@ JobResult FitOneView(const Volume& volume, int level, int v, const std::vector<V
     image.target = AreaResample(photos[u], scaled.camera.width, scaled.camera.height);
     image.layers = RasterizeLevel(volume, level, scaled, ViewBlend{v, -1, 1, 0}, options.billboard_scale);
     image.weight = u == v ? 1.0f : float(options.neighbour_weight);
-    for (BillboardLayer& layer : image.layers.layers)
-      for (BillboardTap& tap : layer.taps)
-        if (tap.weight != 0)
-          tap.texel = uint32_t(local[tap.texel / per_billboard] * per_billboard + tap.texel % per_billboard);
-    if (u == v) {
-      result.scale = scale;
-      result.layers = image.layers.layers.size();
-      result.pixels = size_t(image.target.width) * image.target.height;
-    }
+    image.scale = scale;
+    billboards.Renumber(&image.layers);
     images.push_back(std::move(image));
   }
-  std::vector<float> x(global.size() * per_billboard * 4);
-  for (size_t b = 0; b < global.size(); ++b)
-    std::copy_n(texels->data() + global[b] * per_billboard * 4, per_billboard * 4, x.data() + b * per_billboard * 4);
-  const std::vector<float> start = x;
+  return images;
+}
 
-  const Objective objective{images, start, {1.0f, float(options.alpha_weight), float(options.prior)}};
-  std::vector<float> gradient, diagonal, trial(x.size());
-  Objective::Value value = objective(x, &gradient, &diagonal);
-  result.before = value;
+// Projected, diagonally preconditioned Gauss-Newton from x; returns false when a value turned
+// non-finite (x is then unspecified). A step is taken only when the objective falls and the own
+// photo's error stays at most `own_limit`.
+bool Minimise(const Objective& objective, int iterations, double own_limit, std::vector<float>* x,
+              Objective::Value* value) {
+  std::vector<float> gradient, diagonal, trial(x->size());
+  *value = objective(*x, &gradient, &diagonal);
   double step = 1.0;
-  for (int iteration = 0; iteration < options.iterations && !result.diverged; ++iteration) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     bool accepted = false;
     for (int attempt = 0; attempt < 6 && !accepted; ++attempt, step *= 0.5) {
-      for (size_t i = 0; i < x.size(); ++i)
-        trial[i] = diagonal[i] > 0 ? x[i] - float(step) * gradient[i] / (2 * diagonal[i]) : x[i];
+      for (size_t i = 0; i < x->size(); ++i)
+        trial[i] = diagonal[i] > 0 ? (*x)[i] - float(step) * gradient[i] / (2 * diagonal[i]) : (*x)[i];
       Project(&trial);
       const Objective::Value next = objective(trial);
-      if (!std::isfinite(next.total)) {
-        result.diverged = true;
-        break;
-      }
-      // The renderer shows the own billboards alone at this input view: never worse there.
-      accepted = next.total < value.total && next.own <= result.before.own;
+      if (!std::isfinite(next.total)) return false;
+      accepted = next.total < value->total && next.own <= own_limit;
     }
     if (!accepted) break;  // no descent left at any step length: converged
     step = std::min(1.0, step * 4);  // undo the last halving, and try a longer step next time
-    x.swap(trial);
-    value = objective(x, &gradient, &diagonal);
+    x->swap(trial);
+    *value = objective(*x, &gradient, &diagonal);
   }
-  if (result.diverged) {
+  return true;
+}
+
+// Fits view v's billboards of one level; writes them into `texels` (the level's, as floats).
+JobResult FitOneView(const Volume& volume, int level, int v, const std::vector<View>& views,
+                     const std::vector<ImageF>& photos, const BillboardFitOptions& options,
+                     std::vector<float>* texels) {
+  const ViewBillboards billboards(volume, level, v);
+  const std::vector<FitImage> images = FitImages(volume, level, v, views, photos, options, billboards);
+  JobResult result;
+  result.scale = images[0].scale;
+  result.layers = images[0].layers.layers.size();
+  result.pixels = size_t(images[0].target.width) * images[0].target.height;
+
+  std::vector<float> x = billboards.Gather(*texels);
+  const std::vector<float> start = x;
+  const Objective objective{images, start, {1.0f, float(options.alpha_weight), float(options.prior)}};
+  result.before = objective(x);
+  // The renderer shows the own billboards alone at this input view: never worse there.
+  if (!Minimise(objective, options.iterations, result.before.own, &x, &result.after)) {
+    result.diverged = true;
     result.after = result.before;
     return result;
   }
-  result.after = value;
-  for (size_t b = 0; b < global.size(); ++b)
-    std::copy_n(x.data() + b * per_billboard * 4, per_billboard * 4, texels->data() + global[b] * per_billboard * 4);
+  billboards.Scatter(x, texels);
   return result;
 }
 
