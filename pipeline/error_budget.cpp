@@ -56,23 +56,43 @@ std::vector<float> ToFloat(const uint8_t* begin, size_t count) {
 
 // Mean metrics over views, one accumulator per step and set.
 struct Sum {
-  int views = 0;
-  double rgb = 0, alpha = 0, precision = 0, recall = 0;
-  void Add(const ViewMetrics& m) {
+  int views = 0, parted = 0;
+  double rgb = 0, alpha = 0, precision = 0, recall = 0, bark = 0, leaf = 0;
+  void Add(const ViewMetrics& m, const Image8& render, const Image8& parts, float threshold) {
     ++views, rgb += m.rgb_psnr, alpha += m.alpha_psnr, precision += m.precision, recall += m.recall;
+    if (parts.empty()) return;
+    const double b = PartRecall(render, parts, 0, threshold), l = PartRecall(render, parts, 1, threshold);
+    if (std::isnan(b) || std::isnan(l)) return;  // a view without one of the parts counts for neither
+    ++parted, bark += b, leaf += l;
   }
   BudgetRow Row(std::string step, ViewSet set, bool colour) const {
-    const double n = std::max(views, 1);
-    return {std::move(step), set, views, colour ? rgb / n : std::numeric_limits<double>::quiet_NaN(), alpha / n,
-            precision / n, recall / n};
+    const double n = std::max(views, 1), nan = std::numeric_limits<double>::quiet_NaN();
+    return {std::move(step), set,           views,        colour ? rgb / n : nan,        alpha / n,
+            precision / n,   recall / n,    parted ? bark / parted : nan, parted ? leaf / parted : nan};
   }
 };
 
 }  // namespace
 
+double PartRecall(const Image8& render, const Image8& parts, int channel, float coverage_threshold) {
+  if (render.width != parts.width || render.height != parts.height || parts.channels < 2)
+    Fail("parts mask is ", parts.width, "x", parts.height, "x", parts.channels, ", expected ", render.width, "x",
+         render.height, " RGB");
+  const int covered = int(std::lround(255 * coverage_threshold));
+  int64_t shown = 0, found = 0;
+  for (int y = 0; y < parts.height; ++y)
+    for (int x = 0; x < parts.width; ++x)
+      if (parts.at(x, y, channel) >= 128) {
+        ++shown;
+        found += render.at(x, y, render.channels - 1) > covered;
+      }
+  return shown ? double(found) / double(shown) : std::numeric_limits<double>::quiet_NaN();
+}
+
 std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const VtreeAsset& asset,
                                           const std::vector<TruthView>& held_out, const std::vector<TruthView>& inputs,
-                                          const ImageMetricsOptions& metrics, Progress& progress) {
+                                          const ImageMetricsOptions& metrics, const LodRenderer& render_lod,
+                                          Progress& progress) {
   const fs::path volume_path = workspace / "volume";
   if (!fs::is_directory(volume_path))
     Fail(volume_path.string(), ": no volume; the error budget needs the reconstruction ('voltree reconstruct ",
@@ -116,43 +136,43 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
   std::vector<BudgetRow> rows;
   for (ViewSet set : {ViewSet::kInput, ViewSet::kHeldOut}) {
     const std::vector<TruthView>& views = set == ViewSet::kInput ? inputs : held_out;
-    Sum sums[4];
+    Sum sums[5];
     for (const TruthView& view : views) {
       const Image8 truth = LoadTruthImage(view);
+      const Image8 parts = view.parts.empty() ? Image8() : ReadImage8(view.parts, 3);
       ImageMetricsOptions m = metrics;
       m.truth_premultiplied = view.premultiplied;
       m.render_premultiplied = true;
-      sums[0].Add(CompareViews(VolumeAlpha(volume, view.camera), truth, m));
+      const float threshold = metrics.coverage_threshold;
+      const Image8 volume_alpha = VolumeAlpha(volume, view.camera);
+      sums[0].Add(CompareViews(volume_alpha, truth, m), volume_alpha, parts, threshold);
       const ViewPair pair = SelectViews(asset.views, centre, view.camera.pose.Center());
       const ViewBlend blend{pair.first, pair.second, pair.first_weight, pair.second_weight};
       const LayerImage layers = RasterizeLevel(volume, finest, view.camera, blend, 1.0);
-      for (int s = 0; s < 3; ++s) sums[s + 1].Add(CompareViews(ToImage8(CompositeLayers(layers, texels[s])), truth, m));
+      for (int s = 0; s < 3; ++s) {
+        const Image8 render = ToImage8(CompositeLayers(layers, texels[s]));
+        sums[s + 1].Add(CompareViews(render, truth, m), render, parts, threshold);
+      }
+      m.render_premultiplied = false;
+      const Image8 lod = render_lod(view.camera);
+      sums[4].Add(CompareViews(lod, truth, m), lod, parts, threshold);
       progress.Say("budget", Str(ViewSetName(set), " ", view.camera.name));
     }
-    const char* steps[4] = {"volume", "billboards", "vq", "dxt5"};
-    for (int s = 0; s < 4; ++s)
+    const char* steps[5] = {"volume", "billboards", "vq", "dxt5", "lod"};
+    for (int s = 0; s < 5; ++s)
       if (sums[s].views) rows.push_back(sums[s].Row(steps[s], set, s > 0));
   }
   return rows;
 }
 
-void AppendLodRows(const LevelMetricsTable& table, std::vector<BudgetRow>* rows) {
-  for (ViewSet set : {ViewSet::kInput, ViewSet::kHeldOut}) {
-    const MetricsReport& report = table.Overall(set);
-    if (report.views.empty()) continue;
-    Sum sum;
-    for (const NamedViewMetrics& view : report.views) sum.Add(view.metrics);
-    rows->push_back(sum.Row("lod", set, true));
-  }
-}
-
 std::string BudgetTable(const std::vector<BudgetRow>& rows) {
-  std::string out = "step        views     count  RGB PSNR  alpha PSNR      P      R\n";
+  std::string out = "step        views     count  RGB PSNR  alpha PSNR      P      R  bark R  leaf R\n";
+  auto optional = [](double value, int digits) { return std::isnan(value) ? std::string("-") : FixedDecimals(value, digits); };
   for (const BudgetRow& r : rows) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%-11s %-9s %5d  %8s  %10s  %.3f  %.3f\n", r.step.c_str(), ViewSetName(r.set),
-                  r.views, std::isnan(r.rgb_psnr) ? "-" : FixedDecimals(r.rgb_psnr, 2).c_str(),
-                  FixedDecimals(r.alpha_psnr, 2).c_str(), r.precision, r.recall);
+    char line[200];
+    std::snprintf(line, sizeof line, "%-11s %-9s %5d  %8s  %10s  %.3f  %.3f  %6s  %6s\n", r.step.c_str(),
+                  ViewSetName(r.set), r.views, optional(r.rgb_psnr, 2).c_str(), FixedDecimals(r.alpha_psnr, 2).c_str(),
+                  r.precision, r.recall, optional(r.bark_recall, 3).c_str(), optional(r.leaf_recall, 3).c_str());
     out += line;
   }
   return out;

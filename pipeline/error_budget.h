@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,15 +30,22 @@ struct BudgetRow {
   double rgb_psnr = 0;    // mean over views; NaN for the volume (alpha only)
   double alpha_psnr = 0;  // mean over views
   double precision = 0, recall = 0;
+  // Recall of the visible bark and leaves alone (truth/parts/); NaN where the truth has no parts.
+  double bark_recall = 0, leaf_recall = 0;
 };
 
-// Rows (a)-(d) for both view sets; (e) comes from the evaluation's own LOD row (AppendLodRows).
+// The GPU renderer's image of the asset from a camera, with its own LOD (straight RGBA).
+using LodRenderer = std::function<Image8(const View&)>;
+
+// Rows (a)-(e) for both view sets.
 std::vector<BudgetRow> MeasureErrorBudget(const std::filesystem::path& workspace, const VtreeAsset& asset,
                                           const std::vector<TruthView>& held_out, const std::vector<TruthView>& inputs,
-                                          const ImageMetricsOptions& metrics, Progress& progress);
+                                          const ImageMetricsOptions& metrics, const LodRenderer& render_lod,
+                                          Progress& progress);
 
-// Adds the (e) rows from the evaluation's table (its "auto" LOD summary of each set).
-void AppendLodRows(const LevelMetricsTable& table, std::vector<BudgetRow>* rows);
+// Share of the pixels where `parts` (RGB coverage) shows part `channel` (0 bark, 1 leaves) at
+// least half that the render covers (alpha > threshold); NaN when the part shows nowhere.
+double PartRecall(const Image8& render, const Image8& parts, int channel, float coverage_threshold);
 
 // A plain-text table, one row per step and set, for the terminal and the README.
 std::string BudgetTable(const std::vector<BudgetRow>& rows);

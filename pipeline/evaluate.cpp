@@ -260,9 +260,14 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
         result.table.Add(choices[c], sets[s].first, (*sets[s].second)[v].camera.name, results[s][v].per_choice[c]);
 
   if (options.budget) {
+    const LodRenderer render_lod = [&](const View& camera) {
+      TreeRenderOptions render_options;
+      render_options.lod = options.lod;
+      render_options.lod_history = false;
+      return renderer.Render(camera, render_options);
+    };
     result.budget = MeasureErrorBudget(workspace, asset, held_out ? *held_out : no_views, inputs, options.metrics,
-                                       progress);
-    AppendLodRows(result.table, &result.budget);
+                                       render_lod, progress);
   }
   const PruningStats pruning = ReadPruningStats(workspace, asset, asset_path);
   if (options.plots) {
@@ -302,7 +307,8 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
     for (const BudgetRow& row : result.budget)
       budget.push_back({{"step", row.step}, {"views", ViewSetName(row.set)}, {"count", row.views},
                         {"rgb_psnr", Finite(row.rgb_psnr)}, {"alpha_psnr", Finite(row.alpha_psnr)},
-                        {"precision", row.precision}, {"recall", row.recall}});
+                        {"precision", row.precision}, {"recall", row.recall},
+                        {"bark_recall", Finite(row.bark_recall)}, {"leaf_recall", Finite(row.leaf_recall)}});
     doc["budget"] = budget;
   }
   nlohmann::json pruning_json = nlohmann::json::array();

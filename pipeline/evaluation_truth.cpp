@@ -53,8 +53,11 @@ std::optional<std::vector<TruthView>> HeldOutTruth(const fs::path& workspace) {
   const fs::path truth = workspace / "truth";
   if (!fs::is_directory(truth)) return std::nullopt;
   std::vector<TruthView> views;
-  for (const View& camera : ModelViews(truth / "sparse"))
-    views.push_back({camera, Companion(truth, "rgba", camera.name), {}, /*premultiplied=*/true});
+  for (const View& camera : ModelViews(truth / "sparse")) {
+    const fs::path parts = Companion(truth, "parts", camera.name);
+    views.push_back({camera, Companion(truth, "rgba", camera.name), {}, /*premultiplied=*/true,
+                     fs::exists(parts) ? parts : fs::path()});
+  }
   return views;
 }
 
@@ -63,9 +66,10 @@ std::vector<TruthView> InputTruth(const fs::path& workspace) {
   for (const View& camera : ModelViews(workspace / "sparse")) {
     const fs::path foreground = Companion(workspace, "foreground", camera.name);
     if (fs::exists(foreground)) {
-      views.push_back({camera, foreground, {}, true});
+      views.push_back({camera, foreground, {}, true, {}});
     } else {
-      views.push_back({camera, workspace / "images" / camera.name, Companion(workspace, "mattes", camera.name), false});
+      views.push_back(
+          {camera, workspace / "images" / camera.name, Companion(workspace, "mattes", camera.name), false, {}});
     }
   }
   return views;

@@ -25,13 +25,15 @@ struct TruthView {
   std::filesystem::path colour;  // RGBA truth, or the photo when `matte` is set
   std::filesystem::path matte;   // empty, or the alpha of a photo
   bool premultiplied = false;    // of the image LoadTruthImage returns
+  std::filesystem::path parts;   // empty, or truth/parts/NAME.png: coverage of bark (R) and leaves (G)
 };
 
 // Straight or premultiplied RGBA (see TruthView::premultiplied) of the camera's size; Error names
 // the file when it is missing or has another size.
 Image8 LoadTruthImage(const TruthView& view);
 
-// The studio's held-out views; nothing when WORKSPACE/truth/ does not exist. Errors name the
+// The studio's held-out views (with their parts masks when truth/parts/ has them); nothing when
+// WORKSPACE/truth/ does not exist. Errors name the
 // missing file when truth/ exists but is incomplete.
 std::optional<std::vector<TruthView>> HeldOutTruth(const std::filesystem::path& workspace);
 

@@ -87,12 +87,13 @@ std::string ReportHtml(const ReportPage& page) {
             "draws them (CPU); <em>vq</em> with the codewords; <em>dxt5</em> as fetched from the atlas; <em>lod</em> "
             "the asset drawn by the GPU with its level of detail.</p>\n";
     html << "<table><tr><th>step</th><th>views</th><th>count</th><th>RGB PSNR</th><th>alpha PSNR</th><th>P</th>"
-            "<th>R</th></tr>\n";
+            "<th>R</th><th>bark R</th><th>leaf R</th></tr>\n";
     for (const BudgetRow& row : page.budget)
       html << "<tr><td>" << HtmlEscape(row.step) << "</td><td>" << ViewSetName(row.set) << "</td><td>" << row.views
            << "</td><td>" << (std::isnan(row.rgb_psnr) ? "&ndash;" : Fixed(row.rgb_psnr, 2)) << "</td><td>"
            << Fixed(row.alpha_psnr, 2) << "</td><td>" << Fixed(row.precision, 3) << "</td><td>"
-           << Fixed(row.recall, 3) << "</td></tr>\n";
+           << Fixed(row.recall, 3) << "</td><td>" << (std::isnan(row.bark_recall) ? "&ndash;" : Fixed(row.bark_recall, 3))
+           << "</td><td>" << (std::isnan(row.leaf_recall) ? "&ndash;" : Fixed(row.leaf_recall, 3)) << "</td></tr>\n";
     html << "</table>\n";
   }
 

@@ -2,6 +2,8 @@
 
 #include <tbb/task_group.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -43,6 +45,16 @@ struct Folders {
   fs::path photos, mattes, foreground;
 };
 
+// Coverage of bark (R) and leaves (G) as 8-bit RGB.
+Image8 PartsMask(const ImageF& coverage) {
+  Image8 out(coverage.width, coverage.height, 3);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 2; ++c)
+        out.at(x, y, c) = uint8_t(std::lround(255 * std::clamp(coverage.at(x, y, c), 0.0f, 1.0f)));
+  return out;
+}
+
 }  // namespace
 
 void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs::path& workspace,
@@ -59,6 +71,8 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
   const Folders truth{root / "truth" / "images", root / "truth" / "mattes", root / "truth" / "rgba"};
   for (const Folders& folders : {inputs, truth})
     for (const fs::path& folder : {folders.photos, folders.mattes, folders.foreground}) fs::create_directories(folder);
+  const fs::path parts_folder = root / "truth" / "parts";
+  fs::create_directories(parts_folder);
 
   StudioRenderer renderer(mesh, options);
   progress.Say("synth", Str(renderer.context().Describe(), "; ", mesh.TriangleCount(), " triangles, ",
@@ -73,11 +87,14 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
     for (const View& view : *views) {
       const double start = progress.ElapsedSeconds();
       auto layers = std::make_shared<StudioLayers>(renderer.Photograph(view));
+      // Held-out views also get masks of the visible bark and leaves, to measure thin parts apart.
+      auto parts = std::make_shared<const Image8>(views == &rig.held_out ? PartsMask(renderer.RenderParts(view)) : Image8());
       writers.wait();
-      writers.run([layers, folders, name = view.name] {
+      writers.run([layers, parts, folders, parts_folder, name = view.name] {
         WriteImage(folders.photos / name, layers->photo);
         WriteImage(folders.mattes / name, layers->matte);
         WriteImage(folders.foreground / name, layers->foreground);
+        if (!parts->empty()) WriteImage(parts_folder / name, *parts);
       });
       ++done;
       progress.Say("synth", Str(view.name, " ", done, "/", total, ": rendered in ",
@@ -110,6 +127,7 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
       {"leaf_triangles", LeafTriangles(mesh)},
       {"input_names", "images/view_NNN.png"},
       {"held_out_names", "truth/images/held_NNN.png"},
+      {"parts", "truth/parts/NAME.png: coverage of the visible bark (red) and leaves (green), held-out views"},
       {"colour", "sRGB; foreground and truth/rgba premultiplied; photo = foreground over background"},
   };
   WriteFileAtomic(root / "truth" / "meta.json", meta.dump(2) + "\n");

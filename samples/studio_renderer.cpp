@@ -48,6 +48,15 @@ ImageF StudioRenderer::RenderTree(const View& view) {
   return downsampler_.Downsample(target, options_.supersample);
 }
 
+ImageF StudioRenderer::RenderParts(const View& view) {
+  const Framebuffer& target = Target(view, options_.supersample, tree_target_);
+  target.Bind();
+  target.Clear(0, 0, 0, 0);
+  const auto [near, far] = DepthRange(view, bounds_min_, bounds_max_);
+  tree_.Draw(view, lighting_, near, far, /*parts=*/true);
+  return downsampler_.Downsample(target, options_.supersample);
+}
+
 ImageF StudioRenderer::RenderBackdrop(const View& view) {
   const int supersample = std::min(options_.backdrop_supersample, options_.supersample);
   const Framebuffer& target = Target(view, supersample, backdrop_target_);

@@ -26,6 +26,8 @@ class StudioRenderer {
   // The two linear renders behind Photograph: premultiplied RGBA of the tree, opaque backdrop.
   ImageF RenderTree(const View& view);
   ImageF RenderBackdrop(const View& view);
+  // Coverage of the visible surface by part: R bark, G leaves (box-filtered like the tree).
+  ImageF RenderParts(const View& view);
 
   const GlContext& context() const { return context_; }
 

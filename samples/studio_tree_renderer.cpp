@@ -53,6 +53,8 @@ uniform vec3 uSkyAmbient;
 uniform vec3 uGroundAmbient;
 uniform vec3 uCrownCenter;
 uniform vec3 uCrownRadii;
+uniform int uParts;        // 1: flat part colours instead of shading (truth masks of bark and leaves)
+uniform vec3 uPartColor;
 
 void main() {
   vec4 base = uBaseColor;
@@ -61,6 +63,10 @@ void main() {
   if (base.a < uAlphaCutoff) discard;
   outColor = vec4(0.0);
 #else
+  if (uParts != 0) {
+    outColor = vec4(uPartColor, 1.0);
+    return;
+  }
   base.rgb *= vTint;
 
   vec3 normal = normalize(vNormal);
@@ -163,11 +169,14 @@ StudioTreeRenderer::StudioTreeRenderer(const TreeMesh& mesh) : materials_(mesh.m
   CheckGl("uploading the tree mesh");
 }
 
-void StudioTreeRenderer::DrawGroups(const ShaderProgram& program, bool depth_only) const {
+void StudioTreeRenderer::DrawGroups(const ShaderProgram& program, bool depth_only, bool parts) const {
   program.Use();
+  if (!depth_only) program.Set("uParts", parts ? 1 : 0);
   for (const Group& group : groups_) {
     const Material& material = materials_[group.material];
     const float cutoff = AlphaCutoff(material);
+    // Alpha-tested materials are leaves (red: bark, green: leaves).
+    if (parts) program.Set("uPartColor", cutoff < 0 ? Eigen::Vector3f(1, 0, 0) : Eigen::Vector3f(0, 1, 0));
     if (depth_only && cutoff < 0) {
       program.Set("uHasTexture", 0);  // opaque: no texture fetch needed for depth
     } else {
@@ -184,7 +193,8 @@ void StudioTreeRenderer::DrawGroups(const ShaderProgram& program, bool depth_onl
   }
 }
 
-void StudioTreeRenderer::Draw(const View& view, const StudioLighting& lighting, double near, double far) const {
+void StudioTreeRenderer::Draw(const View& view, const StudioLighting& lighting, double near, double far,
+                              bool parts) const {
   SetStudioCamera(depth_program_, view, near, far);
   SetStudioCamera(program_, view, near, far);
   program_.Set("uSunDirection", lighting.sun_direction);
@@ -201,12 +211,12 @@ void StudioTreeRenderer::Draw(const View& view, const StudioLighting& lighting, 
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
-  DrawGroups(depth_program_, true);
+  DrawGroups(depth_program_, true, false);
   // Pass 2: shade only that surface.
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_FALSE);
   glDepthFunc(GL_EQUAL);
-  DrawGroups(program_, false);
+  DrawGroups(program_, false, parts);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
   CheckGl("drawing the tree");

@@ -19,11 +19,12 @@ class StudioTreeRenderer {
   // Uploads the mesh and its textures once; needs a current GL context.
   explicit StudioTreeRenderer(const TreeMesh& mesh);
 
-  // Draws into the bound `target` (cleared by the caller) with depth testing.
-  void Draw(const View& view, const StudioLighting& lighting, double near, double far) const;
+  // Draws into the bound `target` (cleared by the caller) with depth testing. `parts`: the
+  // visible surface flat red where it is bark and green where it is a leaf, instead of shaded.
+  void Draw(const View& view, const StudioLighting& lighting, double near, double far, bool parts = false) const;
 
  private:
-  void DrawGroups(const ShaderProgram& program, bool depth_only) const;
+  void DrawGroups(const ShaderProgram& program, bool depth_only, bool parts) const;
 
   struct Group {
     int material = 0;
