@@ -37,6 +37,15 @@ Image8 WhiteForeground(const Image8& matte) {
   return out;
 }
 
+void SayFitReport(const BillboardFitReport& report, Progress& progress) {
+  for (const BillboardFitLevel& l : report.levels)
+    progress.Say("fit", Str("level ", l.level, " (1/", FixedDecimals(l.scale, 1), " scale): alpha PSNR ",
+                            FixedDecimals(l.alpha_psnr_before, 2), " -> ", FixedDecimals(l.alpha_psnr_after, 2), " dB, RGB ",
+                            FixedDecimals(l.rgb_psnr_before, 2), " -> ", FixedDecimals(l.rgb_psnr_after, 2),
+                            " dB at the input views"));
+  for (const std::string& warning : report.warnings) progress.Say("fit", "warning: " + warning);
+}
+
 }  // namespace
 
 void ReconstructOptions::Check() const {
@@ -78,7 +87,9 @@ nlohmann::json ReconstructOptions::ToJson() const {
           {"billboard_scale", billboard_scale},
           {"fit", fit.enabled ? nlohmann::json{{"iterations", fit.iterations},
                                                {"prior", fit.prior},
-                                               {"alpha_weight", fit.alpha_weight}}
+                                               {"alpha_weight", fit.alpha_weight},
+                                               {"neighbours", fit.neighbours},
+                                               {"neighbour_weight", fit.neighbour_weight}}
                               : nlohmann::json(false)}};
 }
 
@@ -251,14 +262,7 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
       BillboardFitOptions fit = options.fit;
       fit.billboard_scale = options.billboard_scale;
       const BillboardFitReport report = FitBillboards(input.views, input.mattes, foreground, fit, &volume, progress);
-      if (progress) {
-        for (const BillboardFitLevel& l : report.levels)
-          progress->Say("fit", Str("level ", l.level, " (1/", FixedDecimals(l.scale, 1), " scale): alpha PSNR ",
-                                   FixedDecimals(l.alpha_psnr_before, 2), " -> ", FixedDecimals(l.alpha_psnr_after, 2),
-                                   " dB, RGB ", FixedDecimals(l.rgb_psnr_before, 2), " -> ",
-                                   FixedDecimals(l.rgb_psnr_after, 2), " dB at the input views"));
-        for (const std::string& warning : report.warnings) progress->Say("fit", "warning: " + warning);
-      }
+      if (progress) SayFitReport(report, *progress);
       if (stats) stats->fit = report;
     }
   });
