@@ -191,6 +191,12 @@ CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& opt
     for (size_t i = 0; i < names.size() && i < 20; ++i) joined += (i ? ", " : "") + names[i];
     return names.size() > 20 ? joined + Str(", ... (", names.size(), " in all)") : joined;
   };
+  if (report.registered < 3 && !run_colmap) {  // COLMAP never ran: the names are what is wrong
+    const fs::path& given = options.known_cameras.empty() ? options.import_model : options.known_cameras;
+    Fail("only ", report.registered, " of ", images.size(), " photos have a camera in ", given.string(),
+         " (at least 3 needed): its images are ", list(registered), " but ", (workspace / "images").string(),
+         " holds ", list(images), "; expected the model's image names to be the photos' file names");
+  }
   if (report.registered < 3)
     Fail("only ", report.registered, " of ", images.size(), " photos registered (at least 3 needed); ",
          "the photos need more overlap or texture. Logs in ", colmap_folder.string());
