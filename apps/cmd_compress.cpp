@@ -54,9 +54,9 @@ void AddCompressCommand(CLI::App& app) {
     const auto warn_if_smaller = [](const char* option, int asked, size_t made) {
       if (made < size_t(asked))
         std::fprintf(stderr,
-                     "voltree: warning: %s %d: the volume has only %zu distinct billboards, so the codebook has "
-                     "%zu codewords\n",
-                     option, asked, made, made);
+                     "voltree: warning: %s %d: the codebook has only %zu codewords; the volume's billboards give "
+                     "no more distinct ones\n",
+                     option, asked, made);
     };
     warn_if_smaller("--codebook", args->options.colour_codebook, stats.colour.codebook.size());
     warn_if_smaller("--alpha-codebook", args->options.alpha_codebook, stats.alpha.codebook.size());
