@@ -112,8 +112,9 @@ void CheckMatteSize(const fs::path& matte, const fs::path& photo) {
     Fail(matte.string(), ": matte is ", mw, "x", mh, " but its photo ", photo.string(), " is ", pw, "x", ph);
 }
 
-// One capture, one camera: photos of different sizes (or thumbnails) cannot be one set, and a
-// photo too small to hold a tree gives a matte of noise; both are refused before any work.
+// Photos of different sizes (thumbnails, another camera) cannot be one capture, though the camera
+// may be turned (portrait and landscape); a photo too small to hold a tree gives a matte of
+// noise. Both are refused before any work.
 void CheckPhotoSizes(const std::vector<fs::path>& photos) {
   constexpr int kMinSide = 16;
   const auto first = ReadImageSize(photos.front());
@@ -122,9 +123,11 @@ void CheckPhotoSizes(const std::vector<fs::path>& photos) {
     if (size.first < kMinSide || size.second < kMinSide)
       Fail(photo.string(), ": photo is ", size.first, "x", size.second, "; expected at least ", kMinSide, "x",
            kMinSide, " pixels");
-    if (size != first)
+    const bool turned = size.first == first.second && size.second == first.first;  // portrait and landscape
+    if (size != first && !turned)
       Fail(photo.string(), ": photo is ", size.first, "x", size.second, " but ", photos.front().string(), " is ",
-           first.first, "x", first.second, "; expected every photo of a capture to have the same size");
+           first.first, "x", first.second, "; expected every photo of a capture to have the same size (or turned by "
+           "90 degrees)");
   }
 }
 

@@ -114,9 +114,9 @@ const std::vector<BadInputCase>& Cases() {
       {"photos of different sizes", "matte ws --refine none --quiet",
        [](const fs::path& d) {
          WritePhotos(d / "ws" / "images", 1, 64, 48);
-         WriteImage(d / "ws" / "images" / "view_9.png", Photo(48, 64));
+         WriteImage(d / "ws" / "images" / "view_9.png", Photo(48, 40));
        },
-       1, {"ws/images/view_9.png", "48x64", "64x48", "same size"}},
+       1, {"ws/images/view_9.png", "48x40", "64x48", "same size"}},
       {"a 1x1 photo", "matte ws --refine none --quiet",
        [](const fs::path& d) { WritePhotos(d / "ws" / "images", 1, 1, 1); },
        1, {"ws/images/view_0.png", "1x1", "at least 16x16"}},
