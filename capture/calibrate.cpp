@@ -83,9 +83,15 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
                   Progress& progress) {
   const std::vector<View> views = model.Views();
   std::vector<Image8> mattes;
+  std::string lacking;  // the first camera without a matte, said in the messages below
   for (const View& view : views) {
     const fs::path matte = workspace / "mattes" / (fs::path(view.name).stem().string() + ".png");
-    if (!fs::is_regular_file(matte)) break;
+    if (!fs::is_regular_file(matte)) {
+      const bool has_photo = fs::is_regular_file(workspace / "images" / view.name);
+      lacking = Str("the model's camera for ", view.name, " has no matte ", matte.string(),
+                    has_photo ? "" : Str(" and no photo in ", (workspace / "images").string()));
+      break;
+    }
     mattes.push_back(ReadImage8(matte, 1));
   }
   if (mattes.size() == views.size()) {
@@ -108,7 +114,7 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
     }
     return bounds;
   }
-  progress.Say("calibrate", "no mattes for every photo; bounds from the sparse points");
+  progress.Say("calibrate", Str(lacking, "; bounds from the sparse points"));
   const Eigen::Vector3d target = LookAtPoint(views);
   double distance = 0;
   for (const View& view : views) distance += (view.pose.Center() - target).norm();
@@ -118,8 +124,8 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
     if ((point.position - target).norm() < 0.5 * distance)
       for (int k = 0; k < 3; ++k) axes[k].push_back(point.position[k]);
   if (axes[0].size() < 10)
-    Fail("cannot bound the tree: no mattes in ", (workspace / "mattes").string(),
-         " and too few sparse points near it; run 'voltree matte' first");
+    Fail("cannot bound the tree: ", lacking, ", and too few sparse points are near it; expected a matte for every "
+         "camera of the model (run 'voltree matte', or remove the cameras of photos you left out)");
   Bounds bounds;
   for (int k = 0; k < 3; ++k) {
     std::sort(axes[k].begin(), axes[k].end());

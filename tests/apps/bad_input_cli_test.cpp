@@ -140,6 +140,13 @@ const std::vector<BadInputCase>& Cases() {
       {"a codebook larger than the billboards allow (a warning)", "compress ws --codebook 65536 -o small.vtree --quiet",
        [](const fs::path& d) { MakeTinyDemo(d / "ws"); }, 0,
        {"warning", "--codebook 65536", "only", "codewords"}, "small.vtree"},
+      {"--import of a model with a camera whose photo is not in images/", "calibrate ws --import M",
+       [](const fs::path& d) {
+         MakeTinyDemo(d / "ws");
+         fs::rename(d / "ws" / "sparse", d / "M");
+         for (const char* folder : {"images", "mattes", "foreground"}) fs::remove(d / "ws" / folder / "view_003.png");
+       },
+       1, {"camera for view_003.png", "no matte ws/mattes/view_003.png", "no photo in ws/images", "expected a matte"}},
       {"an output folder inside a file", "synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o file/out",
        [](const fs::path& d) { WriteFileAtomic(d / "file", "a file, not a folder\n"); },
        1, {"file/out", "Not a directory"}},
