@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -24,7 +26,7 @@ void WriteFileAtomic(const fs::path& path, std::string_view bytes) {
   const fs::path temporary = TemporarySibling(path, "tmp");
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) Fail(path.string(), ": cannot open for writing");
+    if (!out) Fail(path.string(), ": cannot open for writing (", std::strerror(errno), ")");
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.flush();
     if (!out) {

@@ -30,9 +30,13 @@ struct Outcome {
   std::string output;  // stdout and stderr
 };
 
-Outcome RunVoltree(const std::string& arguments, const fs::path& cwd) {
+// Root ignores file permissions; as root, permission cases run as the user "nobody".
+std::string Unprivileged() { return ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : ""; }
+
+Outcome RunVoltree(const std::string& arguments, const fs::path& cwd, bool unprivileged = false) {
   Outcome outcome;
-  const std::string command = Str("cd '", cwd.string(), "' && '", VOLTREE_BINARY, "' ", arguments, " 2>&1");
+  const std::string command = Str("cd '", cwd.string(), "' && ", unprivileged ? Unprivileged() : "", "'",
+                                  VOLTREE_BINARY, "' ", arguments, " 2>&1");
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;
@@ -79,6 +83,7 @@ struct BadInputCase {
   int exit_status;
   std::vector<const char*> key_words;  // each must appear in the output
   const char* creates = nullptr;       // a warning case: the one new file it may write
+  bool unprivileged = false;           // run as an ordinary user (root may write anywhere)
 };
 
 // A tiny demo workspace (about a second): photos, volume/ and a 3-level tree.vtree.
@@ -147,6 +152,14 @@ const std::vector<BadInputCase>& Cases() {
          for (const char* folder : {"images", "mattes", "foreground"}) fs::remove(d / "ws" / folder / "view_003.png");
        },
        1, {"camera for view_003.png", "no matte ws/mattes/view_003.png", "no photo in ws/images", "expected a matte"}},
+      {"a workspace you may not write to", "matte ws --refine none --quiet",
+       [](const fs::path& d) {
+         WritePhotos(d / "ws" / "images", 1, 32, 24);
+         fs::permissions(d, fs::perms::all);  // the user may enter the case's folder, but not write in ws
+         fs::permissions(d / "ws", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                       fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+       },
+       1, {"ws/mattes", "Permission denied"}, nullptr, true},
       {"an output folder inside a file", "synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o file/out",
        [](const fs::path& d) { WriteFileAtomic(d / "file", "a file, not a folder\n"); },
        1, {"file/out", "Not a directory"}},
@@ -185,7 +198,11 @@ class BadInput : public ::testing::TestWithParam<size_t> {
     fs::create_directories(dir_);
   }
   void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
+    if (dir_.empty()) return;
+    std::error_code ignored;  // give back what a case took away, so that the folder can be removed
+    for (const auto& entry : fs::recursive_directory_iterator(dir_, ignored))
+      if (entry.is_directory()) fs::permissions(entry.path(), fs::perms::owner_all, fs::perm_options::add, ignored);
+    fs::remove_all(dir_);
   }
   fs::path dir_;
 };
@@ -194,7 +211,7 @@ TEST_P(BadInput, FailsClearlyAndLeavesTheUsersFilesAlone) {
   const BadInputCase& bad = Cases()[GetParam()];
   bad.prepare(dir_);
   const Snapshot before = TakeSnapshot(dir_);
-  const Outcome outcome = RunVoltree(bad.arguments, dir_);
+  const Outcome outcome = RunVoltree(bad.arguments, dir_, bad.unprivileged);
   EXPECT_EQ(outcome.status, bad.exit_status) << bad.name << "\n" << outcome.output;
   for (const char* word : bad.key_words)
     EXPECT_NE(outcome.output.find(word), std::string::npos) << bad.name << ": no '" << word << "' in\n" << outcome.output;
