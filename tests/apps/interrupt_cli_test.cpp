@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -146,6 +147,38 @@ TEST_F(Interrupt, StagingOfADeadProcessIsRemovedByTheNextRun) {
   EXPECT_FALSE(fs::exists(stale));
   EXPECT_TRUE(fs::exists(live / "x"));
   EXPECT_TRUE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(Interrupt, RunResumesWithTheStagesThatDidNotFinish) {
+  auto run = [&](const std::string& arguments) {
+    const pid_t pid = SpawnVoltree(arguments, dir_);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, ReadFile(dir_ / "log.txt"));
+  };
+  const std::string tiny = " --tree young-oak --views 4 --held-out 1 --size 32x32 --levels 3 --orbit 0 --no-eval";
+  ASSERT_EQ(run("demo -o ws --quiet" + tiny).first, 0);
+  const std::string options = " --levels 3 --orbit 2 --orbit-size 32";
+  ASSERT_EQ(run("run ws --force --quiet" + options).first, 0);
+  // As if the run had been interrupted while compressing: the asset was never moved into place.
+  fs::remove(dir_ / "ws" / "tree.vtree");
+  const auto [status, output] = run("run ws" + options);
+  EXPECT_EQ(status, 0) << output;
+  EXPECT_NE(output.find("[reconstruct] skipped: up to date"), std::string::npos) << output;
+  EXPECT_NE(output.find("[compress] start"), std::string::npos) << output;
+  EXPECT_NE(output.find("[orbit] start"), std::string::npos) << "its input changed: " << output;
+  EXPECT_TRUE(fs::exists(dir_ / "ws" / "tree.vtree"));
+  // Changed options redo that stage and those after it, replacing what run wrote ...
+  const auto [changed, message] = run("run ws --codebook 64" + options);
+  EXPECT_EQ(changed, 0) << message;
+  EXPECT_NE(message.find("[reconstruct] skipped: up to date"), std::string::npos) << message;
+  EXPECT_NE(message.find("[compress] start"), std::string::npos) << message;
+  // ... but an asset the user changed is theirs: replacing it needs --force.
+  WriteFileAtomic(dir_ / "ws" / "tree.vtree", "the user's own asset");
+  const auto [refused, why] = run("run ws --codebook 32" + options);
+  EXPECT_EQ(refused, 1) << why;
+  EXPECT_NE(why.find("tree.vtree already exists"), std::string::npos) << why;
+  EXPECT_EQ(ReadFile(dir_ / "ws" / "tree.vtree"), "the user's own asset");
 }
 
 }  // namespace
