@@ -77,6 +77,18 @@ struct Bounds {
   std::string source;
 };
 
+// Cameras that all stand at one point see the tree from one place: no up axis, no hull, no
+// tomography. Such a model (a copied pose, a tripod pano) is refused, not normalized into NaN.
+void CheckCamerasAreApart(const ColmapModel& model, const fs::path& source) {
+  if (model.images.size() < 2) return;
+  const Eigen::Vector3d first = model.images.begin()->second.pose.Center();
+  double spread = 0;
+  for (const auto& [id, image] : model.images) spread = std::max(spread, (image.pose.Center() - first).norm());
+  if (!(spread > 1e-9 * std::max(1.0, first.norm())))
+    Fail(source.string(), ": all ", model.images.size(), " cameras stand at one position (", first.transpose(),
+         "); expected photos taken from around the tree");
+}
+
 // The tree's bounds in a Z-up model: the visual hull of DIR/mattes/ when every registered photo
 // has a matte; else the sparse points near where the cameras look (5th..95th percentiles).
 Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const HullOptions& hull_options,
@@ -181,6 +193,8 @@ CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& opt
     report.stage_seconds = sfm.stage_seconds;
   }
   model.Check();
+  CheckCamerasAreApart(model, run_colmap ? colmap_folder : options.known_cameras.empty() ? options.import_model
+                                                                                         : options.known_cameras);
 
   // Registration: every photo should have a camera.
   std::vector<std::string> registered;

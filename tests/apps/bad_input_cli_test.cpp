@@ -145,6 +145,16 @@ const std::vector<BadInputCase>& Cases() {
       {"a codebook larger than the billboards allow (a warning)", "compress ws --codebook 65536 -o small.vtree --quiet",
        [](const fs::path& d) { MakeTinyDemo(d / "ws"); }, 0,
        {"warning", "--codebook 65536", "only", "codewords"}, "small.vtree"},
+      {"cameras that all stand at one pose", "calibrate ws --known-cameras model",
+       [](const fs::path& d) {
+         WritePhotos(d / "ws" / "images", 3, 32, 24);
+         WriteFileAtomic(d / "model" / "cameras.txt", "1 PINHOLE 32 24 30 30 16 12\n");
+         std::string images;
+         for (int i = 0; i < 3; ++i) images += Str(i + 1, " 1 0 0 0 0 0 5 1 view_", i, ".png\n\n");
+         WriteFileAtomic(d / "model" / "images.txt", images);
+         WriteFileAtomic(d / "model" / "points3D.txt", "");
+       },
+       1, {"model", "all 3 cameras stand at one position", "expected photos taken from around the tree"}},
       {"--import of a model with a camera whose photo is not in images/", "calibrate ws --import M",
        [](const fs::path& d) {
          MakeTinyDemo(d / "ws");
