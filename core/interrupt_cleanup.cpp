@@ -1,11 +1,12 @@
 #include "core/interrupt_cleanup.h"
 
-#include <csignal>
 #include <cerrno>
+#include <csignal>
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <mutex>
 #include <string>
 #include <thread>
