@@ -1,4 +1,5 @@
 // voltree compress DIR: DIR/volume/ -> codebooks (GLA VQ), DXT5 atlas -> DIR/tree.vtree.
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -46,7 +47,19 @@ void AddCompressCommand(CLI::App& app) {
     workspace.zstd = args->zstd;
     workspace.force = args->force;
     Progress progress(args->quiet);
-    CompressWorkspace(args->dir, args->options, workspace, &progress);
+    CompressStats stats;
+    CompressWorkspace(args->dir, args->options, workspace, &progress, &stats);
+    // GLA cannot make more codewords than there are distinct billboards; say so rather than
+    // leave the user to find a smaller codebook in `voltree info`.
+    const auto warn_if_smaller = [](const char* option, int asked, size_t made) {
+      if (made < size_t(asked))
+        std::fprintf(stderr,
+                     "voltree: warning: %s %d: the codebook has only %zu codewords; the volume's billboards give "
+                     "no more distinct ones\n",
+                     option, asked, made);
+    };
+    warn_if_smaller("--codebook", args->options.colour_codebook, stats.colour.codebook.size());
+    warn_if_smaller("--alpha-codebook", args->options.alpha_codebook, stats.alpha.codebook.size());
   });
 }
 

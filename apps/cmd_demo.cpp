@@ -29,7 +29,7 @@ void AddDemoCommand(CLI::App& app) {
   };
   auto args = std::make_shared<Arguments>();
   DemoOptions& o = args->options;
-  command->add_option("-o,--output", args->output, "Output folder; a previous demo's folder is replaced")
+  command->add_option("-o,--output", args->output, "Output folder; the files a previous demo wrote there are replaced, any others kept")
       ->capture_default_str();
   command->add_option("--tree", o.tree.tree, "A preset (oak, pine, young-oak) or a mesh file (.gltf, .glb, .obj)")
       ->capture_default_str();
@@ -55,7 +55,7 @@ void AddDemoCommand(CLI::App& app) {
                     "are moved into COLMAP's frame by the similarity fitted between the two, so the evaluation "
                     "includes calibration error; the lower camera ring is raised to 20 degrees, as COLMAP registers "
                     "grazing views of the ground poorly (default: true cameras)");
-  command->add_flag("--force", o.force, "Replace an output folder that is not a previous demo's");
+  command->add_flag("--force", o.force, "Write into a non-empty folder that is not a previous demo's, beside its files (never replacing one)");
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {
     DemoOptions options = args->options;

@@ -5,11 +5,25 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "core/error.h"
 #include "core/progress.h"
+#include "core/vtree.h"
 #include "render/scene.h"
 #include "render/tree_renderer_job.h"
 
 namespace voltree::app {
+namespace {
+
+// --level names an octree level of the asset; beyond its finest the renderer would clamp silently.
+void CheckRenderLevel(const std::string& asset, int level) {
+  if (level < 0) Fail("--level ", level, ": expected an octree level, 0 or more");
+  if (IsSceneFile(asset)) return;  // each of a scene's assets has its own levels; they clamp
+  const size_t levels = ReadAsset(asset).levels.size();
+  if (size_t(level) >= levels)
+    Fail("--level ", level, ": ", asset, " has levels 0..", levels - 1, "; expected one of them");
+}
+
+}  // namespace
 
 void AddRenderCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
@@ -33,7 +47,7 @@ void AddRenderCommand(CLI::App& app) {
                       "COLMAP text model folder (cameras.txt, images.txt); each frame is named after its image")
       ->excludes(orbit);
   command->add_option("--size", args->size, "WxH (default: the cameras' size; orbit 512x512)");
-  command->add_option("--level", o.render.lod.forced_level, "Draw only this octree level (default: LOD)");
+  auto* level = command->add_option("--level", o.render.lod.forced_level, "Draw only this octree level (default: LOD)");
   command->add_option("--lod", args->lod,
                       "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view "
                       "direction)")
@@ -52,8 +66,12 @@ void AddRenderCommand(CLI::App& app) {
                       "when transparent); needs ffmpeg");
   command->add_flag("--force", o.force, "Replace an existing output folder or video");
   command->add_flag("--quiet", args->quiet, "No progress lines");
-  command->callback([args] {
+  command->callback([args, orbit, level] {
     RenderJobOptions job = args->job;
+    // Given options are checked as given: 0 or negative frames are a mistake, not "the default".
+    if (orbit->count() > 0 && job.orbit < 1)
+      Fail("--orbit ", job.orbit, ": expected the number of frames, 1 or more (default 36)");
+    if (level->count() > 0) CheckRenderLevel(args->asset, job.render.lod.forced_level);
     job.asset = args->asset;
     job.cameras = args->cameras;
     job.output = args->output;

@@ -1,8 +1,12 @@
 // voltree: capture trees from photographs as compact volumetric assets and render them.
 #include <cstdio>
+#include <filesystem>
+#include <new>
 
 #include "apps/commands.h"
 #include "core/error.h"
+#include "core/files.h"
+#include "core/interrupt_cleanup.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -10,6 +14,7 @@ int main(int argc, char** argv) {
       "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render -> eval;\n"
       "'voltree run DIR' chains them on a workspace of photos.\n"
       "Run 'voltree COMMAND --help' for the options of a command."};
+  voltree::InstallInterruptCleanup();  // Ctrl-C removes half-built output folders
   app.require_subcommand(1);
   app.set_version_flag("--version", "voltree 0.1.0");
   voltree::app::AddDemoCommand(app);
@@ -27,7 +32,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   } catch (const voltree::Error& error) {
-    std::fprintf(stderr, "voltree: error: %s\n", error.what());
+    std::fprintf(stderr, "voltree: error: %s\n", voltree::HideStagingNames(error.what()).c_str());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& error) {  // permission denied, disk full: the user's to fix
+    std::fprintf(stderr, "voltree: error: %s\n", voltree::DescribeFilesystemError(error).c_str());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "voltree: error: out of memory; try smaller photos, fewer octree levels or views\n");
     return 1;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "voltree: internal error: %s\n", error.what());

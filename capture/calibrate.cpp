@@ -77,15 +77,33 @@ struct Bounds {
   std::string source;
 };
 
+// Cameras that all stand at one point see the tree from one place: no up axis, no hull, no
+// tomography. Such a model (a copied pose, a tripod pano) is refused, not normalized into NaN.
+void CheckCamerasAreApart(const ColmapModel& model, const fs::path& source) {
+  if (model.images.size() < 2) return;
+  const Eigen::Vector3d first = model.images.begin()->second.pose.Center();
+  double spread = 0;
+  for (const auto& [id, image] : model.images) spread = std::max(spread, (image.pose.Center() - first).norm());
+  if (!(spread > 1e-9 * std::max(1.0, first.norm())))
+    Fail(source.string(), ": all ", model.images.size(), " cameras stand at one position (", first.transpose(),
+         "); expected photos taken from around the tree");
+}
+
 // The tree's bounds in a Z-up model: the visual hull of DIR/mattes/ when every registered photo
 // has a matte; else the sparse points near where the cameras look (5th..95th percentiles).
 Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const HullOptions& hull_options,
                   Progress& progress) {
   const std::vector<View> views = model.Views();
   std::vector<Image8> mattes;
+  std::string lacking;  // the first camera without a matte, said in the messages below
   for (const View& view : views) {
     const fs::path matte = workspace / "mattes" / (fs::path(view.name).stem().string() + ".png");
-    if (!fs::is_regular_file(matte)) break;
+    if (!fs::is_regular_file(matte)) {
+      const bool has_photo = fs::is_regular_file(workspace / "images" / view.name);
+      lacking = Str("the model's camera for ", view.name, " has no matte ", matte.string(),
+                    has_photo ? "" : Str(" and no photo in ", (workspace / "images").string()));
+      break;
+    }
     mattes.push_back(ReadImage8(matte, 1));
   }
   if (mattes.size() == views.size()) {
@@ -108,7 +126,7 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
     }
     return bounds;
   }
-  progress.Say("calibrate", "no mattes for every photo; bounds from the sparse points");
+  progress.Say("calibrate", Str(lacking, "; bounds from the sparse points"));
   const Eigen::Vector3d target = LookAtPoint(views);
   double distance = 0;
   for (const View& view : views) distance += (view.pose.Center() - target).norm();
@@ -118,8 +136,8 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
     if ((point.position - target).norm() < 0.5 * distance)
       for (int k = 0; k < 3; ++k) axes[k].push_back(point.position[k]);
   if (axes[0].size() < 10)
-    Fail("cannot bound the tree: no mattes in ", (workspace / "mattes").string(),
-         " and too few sparse points near it; run 'voltree matte' first");
+    Fail("cannot bound the tree: ", lacking, ", and too few sparse points are near it; expected a matte for every "
+         "camera of the model (run 'voltree matte', or remove the cameras of photos you left out)");
   Bounds bounds;
   for (int k = 0; k < 3; ++k) {
     std::sort(axes[k].begin(), axes[k].end());
@@ -175,6 +193,8 @@ CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& opt
     report.stage_seconds = sfm.stage_seconds;
   }
   model.Check();
+  CheckCamerasAreApart(model, run_colmap ? colmap_folder : options.known_cameras.empty() ? options.import_model
+                                                                                         : options.known_cameras);
 
   // Registration: every photo should have a camera.
   std::vector<std::string> registered;
@@ -191,6 +211,12 @@ CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& opt
     for (size_t i = 0; i < names.size() && i < 20; ++i) joined += (i ? ", " : "") + names[i];
     return names.size() > 20 ? joined + Str(", ... (", names.size(), " in all)") : joined;
   };
+  if (report.registered < 3 && !run_colmap) {  // COLMAP never ran: the names are what is wrong
+    const fs::path& given = options.known_cameras.empty() ? options.import_model : options.known_cameras;
+    Fail("only ", report.registered, " of ", images.size(), " photos have a camera in ", given.string(),
+         " (at least 3 needed): its images are ", list(registered), " but ", (workspace / "images").string(),
+         " holds ", list(images), "; expected the model's image names to be the photos' file names");
+  }
   if (report.registered < 3)
     Fail("only ", report.registered, " of ", images.size(), " photos registered (at least 3 needed); ",
          "the photos need more overlap or texture. Logs in ", colmap_folder.string());

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kImageExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp"};
+const char* const kImageExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".exr"};
 
 std::string Lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -83,7 +83,7 @@ std::vector<fs::path> ListPhotos(const fs::path& images_dir) {
       photos.push_back(entry.path());
   std::sort(photos.begin(), photos.end());
   if (photos.empty())
-    Fail(images_dir.string(), ": no photos (expected .png, .jpg, .jpeg, .tif, .tiff or .bmp files)");
+    Fail(images_dir.string(), ": no photos (expected .png, .jpg, .jpeg, .tif, .tiff, .bmp or .exr files)");
   std::map<std::string, fs::path> by_stem;
   for (const fs::path& photo : photos) {
     const auto [it, inserted] = by_stem.emplace(photo.stem().string(), photo);
@@ -112,9 +112,29 @@ void CheckMatteSize(const fs::path& matte, const fs::path& photo) {
     Fail(matte.string(), ": matte is ", mw, "x", mh, " but its photo ", photo.string(), " is ", pw, "x", ph);
 }
 
+// Photos of different sizes (thumbnails, another camera) cannot be one capture, though the camera
+// may be turned (portrait and landscape); a photo too small to hold a tree gives a matte of
+// noise. Both are refused before any work.
+void CheckPhotoSizes(const std::vector<fs::path>& photos) {
+  constexpr int kMinSide = 16;
+  const auto first = ReadImageSize(photos.front());
+  for (const fs::path& photo : photos) {
+    const auto size = ReadImageSize(photo);
+    if (size.first < kMinSide || size.second < kMinSide)
+      Fail(photo.string(), ": photo is ", size.first, "x", size.second, "; expected at least ", kMinSide, "x",
+           kMinSide, " pixels");
+    const bool turned = size.first == first.second && size.second == first.first;  // portrait and landscape
+    if (size != first && !turned)
+      Fail(photo.string(), ": photo is ", size.first, "x", size.second, " but ", photos.front().string(), " is ",
+           first.first, "x", first.second, "; expected every photo of a capture to have the same size (or turned by "
+           "90 degrees)");
+  }
+}
+
 size_t MatteWorkspace(const fs::path& dir, const MatteWorkspaceOptions& options, Progress& progress) {
   options.Check();
   const std::vector<fs::path> photos = ListPhotos(dir / "images");
+  CheckPhotoSizes(photos);
   // Check the user's mattes before any work, so a bad one fails fast.
   if (!options.user_mattes.empty())
     for (const fs::path& photo : photos) CheckMatteSize(FindUserMatte(options.user_mattes, photo), photo);

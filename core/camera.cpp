@@ -50,8 +50,10 @@ void Camera::Check() const {
   if (static_cast<int>(params.size()) != CameraModelParamCount(model))
     Fail("camera model ", CameraModelName(model), " needs ", CameraModelParamCount(model),
          " parameters, got ", params.size());
-  for (double p : params)
-    if (!std::isfinite(p)) Fail("camera parameter is not a finite number");
+  for (size_t i = 0; i < params.size(); ++i)
+    if (!std::isfinite(params[i]))
+      Fail("camera ", CameraModelName(model), " parameter ", i + 1, " of ", params.size(), " is ", params[i],
+           "; expected a finite number");
   if (!(FocalX() > 0) || !(FocalY() > 0))
     Fail("camera focal length must be positive, got ", FocalX(), " and ", FocalY());
 }

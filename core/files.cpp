@@ -2,11 +2,15 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <system_error>
 
 #include "core/error.h"
+#include "core/interrupt_cleanup.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -22,7 +26,7 @@ void WriteFileAtomic(const fs::path& path, std::string_view bytes) {
   const fs::path temporary = TemporarySibling(path, "tmp");
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) Fail(path.string(), ": cannot open for writing");
+    if (!out) Fail(path.string(), ": cannot open for writing (", std::strerror(errno), ")");
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.flush();
     if (!out) {
@@ -58,19 +62,39 @@ void CheckCanReplaceFolder(const fs::path& path, bool force) {
     Fail(path.string(), " exists and is not empty; pass --force to replace it");
 }
 
+std::string HideStagingNames(const std::string& message) {
+  // ".NAME.partial-PID" -> "NAME"; ".NAME.tmp-PID.png" -> "NAME.png"
+  static const std::regex staging(R"((^|[/\s'"\[(])\.([^/\s'"\[\]]+?)\.(partial|old|tmp)-[0-9]+)");
+  return std::regex_replace(message, staging, "$1$2");
+}
+
+std::string DescribeFilesystemError(const fs::filesystem_error& error) {
+  std::string where = error.path1().empty() ? std::string("a file") : error.path1().string();
+  if (!error.path2().empty()) where += Str(" (to ", error.path2().string(), ")");
+  return HideStagingNames(Str(where, ": ", error.code().message(), "; check that the folder exists and that you may "
+                              "write there"));
+}
+
 StagedDirectory::StagedDirectory(fs::path final_path, bool force) : final_(std::move(final_path)) {
   if (final_.filename().empty()) final_ = final_.parent_path();  // "out/" -> "out"
   CheckCanReplaceFolder(final_, force);
+  RemoveStaleStaging(final_);
   staging_ = TemporarySibling(final_, "partial");
-  std::error_code ignored;
-  fs::remove_all(staging_, ignored);
-  fs::create_directories(staging_);
+  std::error_code error;
+  fs::remove_all(staging_, error);
+  RemoveOnInterrupt(staging_);
+  fs::create_directories(staging_, error);
+  if (error) {
+    ForgetOnInterrupt(staging_);
+    Fail(final_.string(), ": cannot create the output folder: ", error.message());
+  }
 }
 
 StagedDirectory::~StagedDirectory() {
   if (committed_) return;
   std::error_code ignored;
   fs::remove_all(staging_, ignored);
+  ForgetOnInterrupt(staging_);
 }
 
 void StagedDirectory::Commit() {
@@ -87,9 +111,11 @@ void StagedDirectory::Commit() {
       Fail(final_.string(), ": cannot move the finished folder into place");
     }
     fs::remove_all(old, error);
+    ForgetOnInterrupt(staging_);
   } else {
     fs::rename(staging_, final_, error);
     if (error) Fail(final_.string(), ": cannot move the finished folder into place: ", error.message());
+    ForgetOnInterrupt(staging_);
   }
   committed_ = true;
 }

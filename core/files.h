@@ -18,10 +18,17 @@ void CheckCanWrite(const std::filesystem::path& path, bool force);
 // before slow work so that a refusal comes at once.
 void CheckCanReplaceFolder(const std::filesystem::path& path, bool force);
 
+// Messages name the user's paths, not the hidden staging siblings they are built in:
+// ".NAME.partial-PID" becomes "NAME", ".NAME.tmp-PID.png" becomes "NAME.png".
+std::string HideStagingNames(const std::string& message);
+// A filesystem error (permission denied, disk full, ...) as a user's message naming the path.
+std::string DescribeFilesystemError(const std::filesystem::filesystem_error& error);
+
 // An output folder built in a hidden sibling ("DIR.partial-<pid>") and renamed into place by
 // Commit(); destroyed without Commit() (an error, Ctrl-C through an exception) it removes the
-// partial folder. An existing non-empty DIR is an error unless `force`, then it is replaced
-// only at Commit().
+// partial folder (on SIGINT/SIGTERM too, through core/interrupt_cleanup.h; staging folders of
+// processes that died are removed when the next one starts). An existing non-empty DIR is an
+// error unless `force`, then it is replaced only at Commit().
 class StagedDirectory {
  public:
   StagedDirectory(std::filesystem::path final_path, bool force);

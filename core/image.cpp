@@ -3,11 +3,15 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cmath>
+#include <new>
 #include <unistd.h>
 
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/image_size_guard.h"
+#include "core/srgb.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -84,6 +88,46 @@ Image8 Reorient(const Image8& in, int orientation) {
   return out;
 }
 
+// Linear floating-point photos (EXR, HDR) become 8-bit sRGB: colour through the sRGB curve, alpha
+// (linear by definition) scaled.
+Image8 EncodeLinearAsSrgb(const ImageF& linear) {
+  Image8 out(linear.width, linear.height, linear.channels);
+  const bool has_alpha = linear.channels == 2 || linear.channels == 4;
+  for (size_t i = 0; i < linear.pixels.size(); ++i) {
+    const bool alpha = has_alpha && int(i % linear.channels) == linear.channels - 1;
+    float value = std::clamp(std::isfinite(linear.pixels[i]) ? linear.pixels[i] : 0.0f, 0.0f, 1.0f);
+    if (!alpha) value = LinearToSrgb(value);
+    out.pixels[i] = uint8_t(std::lround(value * 255.0f));
+  }
+  return out;
+}
+
+bool IsFloatingPoint(const ImageSpec& spec) {
+  return spec.format.basetype == TypeDesc::FLOAT || spec.format.basetype == TypeDesc::HALF ||
+         spec.format.basetype == TypeDesc::DOUBLE;
+}
+
+// Decoders report damage (a truncated JPEG: "Premature end of JPEG file") as a message while
+// returning success and grey pixels; a photo with such a message is refused, not used.
+void FailOnDecoderMessage(const fs::path& path, ImageInput& input) {
+  const std::string message = input.geterror();
+  if (!message.empty()) Fail(path.string(), ": damaged image (", message, "); expected a complete file");
+}
+
+template <typename T>
+Image<T> DecodePixels(const fs::path& path, ImageInput& input, TypeDesc type) {
+  const ImageSpec& spec = input.spec();
+  try {
+    Image<T> image(spec.width, spec.height, spec.nchannels);
+    if (!input.read_image(0, 0, 0, spec.nchannels, type, image.pixels.data()))
+      Fail(path.string(), ": cannot decode image: ", input.geterror());
+    FailOnDecoderMessage(path, input);
+    return image;
+  } catch (const std::bad_alloc&) {
+    Fail(path.string(), ": not enough memory to decode its ", spec.width, "x", spec.height, " pixels");
+  }
+}
+
 }  // namespace
 
 Image8 ReadImage8(const fs::path& path, int channels) {
@@ -97,9 +141,11 @@ Image8 ReadImage8(const fs::path& path, int channels) {
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 4)
     Fail(path.string(), ": unsupported image (", spec.width, "x", spec.height, ", ", spec.nchannels,
          " channels)");
-  Image8 image(spec.width, spec.height, spec.nchannels);
-  if (!input->read_image(0, 0, 0, spec.nchannels, TypeDesc::UINT8, image.pixels.data()))
-    Fail(path.string(), ": cannot decode image: ", input->geterror());
+  const bool floating = IsFloatingPoint(spec);
+  CheckImageSizeBeforeDecoding(path, spec.width, spec.height, std::max(spec.nchannels, channels),
+                               floating ? int(sizeof(float)) : 1);
+  Image8 image = floating ? EncodeLinearAsSrgb(DecodePixels<float>(path, *input, TypeDesc::FLOAT))
+                          : DecodePixels<uint8_t>(path, *input, TypeDesc::UINT8);
   image = Reorient(image, spec.get_int_attribute("Orientation", 1));
   return ConvertChannels<uint8_t>(image, channels, 255);
 }

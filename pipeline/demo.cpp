@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "pipeline/demo_folder.h"
 #include "reconstruct/workspace.h"
 #include "samples/studio.h"
 
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kMarker = "demo.json";
+constexpr const char* kSummary = "demo.json";
 
 void WriteContactSheet(const fs::path& workspace) {
   std::vector<fs::path> photos;
@@ -62,8 +63,10 @@ void DemoOptions::Check() const {
 
 DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   options.Check();
-  const bool previous_demo = fs::exists(options.output / kMarker);
-  StagedDirectory stage(options.output, options.force || previous_demo);
+  CheckDemoOutput(options.output, options.force);  // a refusal comes before the slow work
+  // Built aside; InstallDemoFolder decides what may be replaced (StagedDirectory's own check is
+  // the one above, hence force here).
+  StagedDirectory stage(options.output, /*force=*/true);
   const fs::path workspace = stage.path();
   nlohmann::json summary = {{"tree", TreeSourceName(options.tree)},
                             {"seed", options.tree.seed},
@@ -139,11 +142,11 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   used["orbit"] = {{"frames", options.orbit.frames}, {"size", options.orbit.size}};
   used["evaluate"] = options.evaluate;
   summary["options"] = used;
-  WriteFileAtomic(workspace / kMarker, summary.dump(2) + "\n");
-  stage.Commit();
+  WriteFileAtomic(workspace / kSummary, summary.dump(2) + "\n");
+  InstallDemoFolder(workspace, options.output, options.force);
   progress.Say("demo", Str("done in ", std::round(total * 10) / 10, " s: ", options.output.string(), " (asset ",
                            (options.output / "tree.vtree").string(), ")"));
-  result.summary = options.output / kMarker;
+  result.summary = options.output / kSummary;
   result.seconds = total;
   return result;
 }

@@ -30,8 +30,9 @@ struct DemoOptions {
   // (normalized) frame with the similarity that best maps the true input cameras onto COLMAP's.
   bool colmap = false;
   CalibrateOptions calibrate = DefaultCalibrate();
-  // Replace an output folder that is not a previous demo's. A previous demo's folder (it holds
-  // demo.json) is replaced without asking, so the README's command can be run again.
+  // Write into a non-empty folder that is not a previous demo's, beside the files there (never
+  // replacing one). What a previous demo wrote (listed in its .voltree-demo marker) is replaced
+  // without asking, so the README's command can be run again; files added to it are kept.
   bool force = false;
   void Check() const;
 

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "pipeline/report_folder.h"
+#include "pipeline/stage_record.h"
 #include "reconstruct/workspace.h"
 
 namespace voltree {
@@ -15,6 +16,23 @@ namespace {
 
 bool NeedsMattes(const fs::path& dir) { return !fs::is_directory(dir / "mattes"); }
 bool NeedsCameras(const fs::path& dir) { return !fs::is_directory(dir / "sparse"); }
+
+// What the resumable stages are made from (pipeline/stage_record.h): a stage whose record still
+// matches is skipped, unless --force.
+constexpr const char* kUpToDate = "up to date: inputs and options unchanged since it ran";
+StageRecipe ReconstructRecipe(const RunOptions& options) {
+  return {"reconstruct", {"images", "mattes", "foreground", "sparse", "scene.json"}, {"volume"},
+          options.reconstruct.ToJson().dump()};
+}
+StageRecipe CompressRecipe(const RunOptions& options) {
+  return {"compress", {"volume"}, {"tree.vtree"}, options.compress.ToJson().dump()};
+}
+StageRecipe OrbitRecipe(const RunOptions& options) {
+  // Recipes name paths inside the workspace; a report elsewhere is named absolutely.
+  const fs::path orbit = options.evaluate.report.empty() ? fs::path("report") / "orbit"
+                                                         : fs::absolute(options.evaluate.report / "orbit");
+  return {"orbit", {"tree.vtree"}, {orbit.string()}, Str(options.orbit.frames, " ", options.orbit.size)};
+}
 
 }  // namespace
 
@@ -45,10 +63,11 @@ void CheckRunWorkspace(const RunOptions& options) {
     Fail(dir.string(), ": neither images/ nor foreground/: reconstruct needs the colours of the photos");
   if (NeedsMattes(dir) && fs::exists(dir / "foreground") && !options.force)
     Fail((dir / "foreground").string(), ": exists but mattes/ does not; pass --force to compute both again");
-  CheckCanReplaceFolder(dir / "volume", options.force);
-  CheckCanWrite(dir / "tree.vtree", options.force);
   const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
-  CheckCanReplaceFolder(report / "orbit", options.force);
+  // Outputs that an earlier run wrote (and nobody changed since) may be replaced: resuming.
+  CheckCanReplaceFolder(dir / "volume", options.force || StageOwnsOutputs(dir, ReconstructRecipe(options)));
+  CheckCanWrite(dir / "tree.vtree", options.force || StageOwnsOutputs(dir, CompressRecipe(options)));
+  CheckCanReplaceFolder(report / "orbit", options.force || StageOwnsOutputs(dir, OrbitRecipe(options)));
   CheckCanWriteReport(report, options.force || options.evaluate.force);
 }
 
@@ -82,16 +101,29 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
                                   report.mean_reprojection_error, " px"));
   });
-  stage("reconstruct", true, "", [&] { ReconstructWorkspace(dir, options.reconstruct, options.force, &progress); });
-  stage("compress", true, "", [&] {
+  // A resumable stage runs when --force or when its record does not match; the record is dropped
+  // before it runs and written once it finished.
+  // before it runs and written once it finished. `replace`: its outputs may be replaced.
+  auto resumable = [&](const StageRecipe& recipe, auto&& work) {
+    stage(recipe.stage.c_str(), options.force || !StageIsUpToDate(dir, recipe), kUpToDate, [&] {
+      const bool replace = options.force || StageOwnsOutputs(dir, recipe);
+      ForgetStage(dir, recipe);
+      work(replace);
+      RecordStage(dir, recipe);
+    });
+  };
+  resumable(ReconstructRecipe(options),
+            [&](bool replace) { ReconstructWorkspace(dir, options.reconstruct, replace, &progress); });
+  result.asset = dir / "tree.vtree";
+  resumable(CompressRecipe(options), [&](bool replace) {
     CompressWorkspaceOptions workspace_options;
-    workspace_options.force = options.force;
+    workspace_options.force = replace;
     result.asset = CompressWorkspace(dir, options.compress, workspace_options, &progress);
   });
   const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
-  stage("orbit", true, "", [&] {
+  resumable(OrbitRecipe(options), [&](bool replace) {
     OrbitFramesOptions orbit = options.orbit;
-    orbit.force = orbit.force || options.force;
+    orbit.force = orbit.force || replace;
     fs::create_directories(report);
     RenderOrbitFrames(result.asset, report / "orbit", orbit, progress);
   });

@@ -6,6 +6,7 @@
 
 #include "compress/synthetic_volume.h"
 #include "core/error.h"
+#include "needs_two_cores.h"
 
 namespace voltree {
 namespace {
@@ -62,6 +63,7 @@ TEST(CompressVolume, Deterministic) {
 }
 
 TEST(CompressVolume, SameBytesWhateverTheThreads) {
+  VOLTREE_SKIP_UNLESS_TWO_CORES();
   const Volume volume = TestVolume();
   for (bool weighted : {false, true}) {
     CompressOptions options = SmallCodebooks();

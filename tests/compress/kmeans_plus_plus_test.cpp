@@ -11,6 +11,8 @@
 #include <random>
 #include <set>
 
+#include "needs_two_cores.h"
+
 namespace voltree {
 namespace {
 
@@ -99,6 +101,7 @@ TEST_P(KMeansPlusPlus, ReportsExactlyTheNearestCentres) {
 }
 
 TEST(KMeansPlusPlusCounts, SameSeedsWhateverTheThreads) {
+  VOLTREE_SKIP_UNLESS_TWO_CORES();
   const TrainingSet set = Patches(3000, false, 12);
   const Seeds threaded = SeedKMeansPlusPlus(set, 64, 5);
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);

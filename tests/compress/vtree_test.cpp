@@ -216,7 +216,10 @@ TEST(Vtree, HugeCountsAndOutOfRangeIndices) {
 }
 
 TEST(Vtree, RandomCorruptionWithoutChecksumsNeverCrashes) {
-  // With checksums off every mutation reaches the parsers; they must throw Error or succeed.
+  // With checksums off every mutation reaches the parsers; they must throw Error or succeed, and
+  // they must actually catch damage: a fair share of the mutations hit counts, offsets and the
+  // header and are rejected, while some only change texel bytes and still parse (measured with
+  // this seed: 382 and 378 of 400 rejected, raw and zstd).
   VtreeReadOptions options;
   options.verify_checksums = false;
   for (bool zstd : {false, true}) {
@@ -224,15 +227,26 @@ TEST(Vtree, RandomCorruptionWithoutChecksumsNeverCrashes) {
     write.zstd = zstd;
     const std::string bytes = SerializeAsset(Asset(), write);
     std::mt19937 rng(3);
-    for (int i = 0; i < 400; ++i) {
+    int rejected = 0, accepted = 0;
+    constexpr int kMutations = 400;
+    for (int i = 0; i < kMutations; ++i) {
       std::string corrupt = bytes;
       for (int k = 0; k < 1 + int(rng() % 4); ++k) corrupt[rng() % corrupt.size()] = char(rng());
       try {
         ParseAsset(corrupt, "tree.vtree", options);
+        ++accepted;
       } catch (const Error&) {
+        ++rejected;
       }
     }
+    EXPECT_EQ(rejected + accepted, kMutations);
+    EXPECT_GE(rejected, 340) << (zstd ? "zstd" : "raw") << ": rejected " << rejected << " of " << kMutations;
+    EXPECT_GE(accepted, 5) << (zstd ? "zstd" : "raw") << ": accepted " << accepted << " of " << kMutations;
   }
+  // A damaged magic is always caught, checksums or not.
+  std::string bad_magic = SerializeAsset(Asset(), {});
+  bad_magic[0] ^= 0x20;
+  EXPECT_THROW(ParseAsset(bad_magic, "tree.vtree", options), Error);
 }
 
 }  // namespace

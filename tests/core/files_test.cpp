@@ -95,5 +95,33 @@ TEST(StagedDirectory, RefusesAFileInTheWay) {
   EXPECT_THROW(StagedDirectory(root / "out", true), Error);
 }
 
+TEST(Files, MessagesNameTheUsersPathsNotTheStagingOnes) {
+  EXPECT_EQ(HideStagingNames("ws/.mattes.partial-4242/a.png: Permission denied"), "ws/mattes/a.png: Permission denied");
+  EXPECT_EQ(HideStagingNames("out/.view_000.tmp-17.png: cannot write"), "out/view_000.png: cannot write");
+  EXPECT_EQ(HideStagingNames("a/.b.old-9 and c/.d.partial-12"), "a/b and c/d");
+  EXPECT_EQ(HideStagingNames("nothing/.hidden/here.partial"), "nothing/.hidden/here.partial");
+}
+
+TEST(Files, FilesystemErrorsNameThePathAndTheReason) {
+  const fs::filesystem_error error("cannot create directories", fs::path("ws/.mattes.partial-7"),
+                                   std::make_error_code(std::errc::permission_denied));
+  const std::string message = DescribeFilesystemError(error);
+  EXPECT_NE(message.find("ws/mattes: Permission denied"), std::string::npos) << message;
+  EXPECT_EQ(message.find("partial"), std::string::npos) << message;
+}
+
+TEST(StagedDirectory, NamesTheUsersFolderWhenItCannotBeCreated) {
+  const fs::path folder = FreshFolder("not_a_folder");
+  WriteFileAtomic(folder / "file", "x");
+  try {
+    StagedDirectory stage(folder / "file" / "out", false);
+    FAIL() << "a folder was made inside a file";
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find((folder / "file" / "out").string()), std::string::npos) << message;
+    EXPECT_EQ(message.find("partial"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace voltree

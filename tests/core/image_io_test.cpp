@@ -96,6 +96,37 @@ TEST(ImageIo, ExrKeepsFloatsExactly) {
   EXPECT_EQ(read.pixels, image.pixels);
 }
 
+TEST(ImageIo, TruncatedJpegIsRefusedNotReadAsGrey) {
+  const fs::path folder = FreshFolder("truncated");
+  WriteImage(folder / "whole.jpg", Pattern(64, 48, 3));
+  const std::string bytes = ReadFile(folder / "whole.jpg");
+  WriteFileAtomic(folder / "half.jpg", bytes.substr(0, bytes.size() / 2));
+  EXPECT_NO_THROW(ReadImage8(folder / "whole.jpg"));
+  try {
+    ReadImage8(folder / "half.jpg");
+    FAIL() << "a truncated JPEG was decoded";
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("half.jpg"), std::string::npos) << message;
+    EXPECT_NE(message.find("damaged image"), std::string::npos) << message;
+  }
+}
+
+TEST(ImageIo, FloatPhotosAreEncodedAsSrgb) {
+  const fs::path folder = FreshFolder("exr_photo");
+  ImageF linear(4, 1, 3);
+  const float values[4] = {0.0f, 0.2158605f, 1.0f, 4.0f};  // 0.2158605 is sRGB 128/255 in linear light
+  for (int x = 0; x < 4; ++x)
+    for (int c = 0; c < 3; ++c) linear.at(x, 0, c) = values[x];
+  WriteImage(folder / "photo.exr", linear);
+  const Image8 read = ReadImage8(folder / "photo.exr", 3);
+  ASSERT_EQ(read.width, 4);
+  EXPECT_EQ(read.at(0, 0, 0), 0);
+  EXPECT_EQ(read.at(1, 0, 1), 128);
+  EXPECT_EQ(read.at(2, 0, 2), 255);
+  EXPECT_EQ(read.at(3, 0, 0), 255);  // brighter than white is clamped
+}
+
 TEST(ImageIo, ErrorsNameTheFile) {
   const fs::path folder = FreshFolder("errors");
   WriteFileAtomic(folder / "broken.png", "not a png at all");

@@ -38,6 +38,28 @@ Image8 Rectangle(int width, int height, int x0, int y0, int w, int h) {
   return image;
 }
 
+// Reference values computed outside this code base (a plain Python script that builds the 2-D
+// 11x11 Gaussian window directly, not separably, and follows Wang et al.'s reference formulas and
+// the RMS pyramid as defined in the header) for a pattern and a deterministic perturbation of
+// +-10 levels. The test compares the code with these numbers, not with its own arithmetic.
+TEST(ImageMetrics, MatchesIndependentlyComputedReferenceValues) {
+  const Image8 truth = Pattern(32, 24);
+  Image8 render = truth;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) render.at(x, y, c) = uint8_t(render.at(x, y, c) + (x * 7 + y * 13 + c * 5) % 21 - 10);
+  const ViewMetrics m = CompareViews(render, truth);
+  EXPECT_NEAR(m.rgb_psnr, 32.495034930540, 1e-6);
+  EXPECT_NEAR(m.rgb_ssim, 0.994342112743, 1e-6);
+  const double rms[] = {0.023727296291, 0.008576388646, 0.004200023867, 0.000979913333, 0.000458067091};
+  ASSERT_EQ(m.rms_per_scale.size(), 5u);
+  for (size_t i = 0; i < 5; ++i) EXPECT_NEAR(m.rms_per_scale[i], rms[i], 1e-7) << "scale " << i;
+  EXPECT_NEAR(m.multiscale_rms, 0.007588337846, 1e-7);
+  // Literal values, not formulas: 20 log10(255 / 10) and 20 log10(255 / 6).
+  EXPECT_NEAR(CompareViews(AddToColour(truth, 10), truth).rgb_psnr, 28.130803608679, 1e-9);
+  EXPECT_NEAR(PsnrFromMse(36.0, 255.0), 32.567778601006, 1e-9);
+}
+
 TEST(ImageMetrics, IdenticalImagesArePerfect) {
   Image8 truth = Pattern(32, 24);
   for (int x = 0; x < 32; ++x) truth.at(x, 5, 3) = uint8_t(x * 8);  // some fractional alpha too

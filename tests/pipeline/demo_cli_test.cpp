@@ -42,6 +42,15 @@ TEST_F(DemoCli, SameAssetFromAnyStagingFolder) {
   EXPECT_TRUE(first == ReadFile(root_ / "b" / "demo" / "tree.vtree")) << "the assets differ";
   EXPECT_TRUE(fs::exists(root_ / "a" / "demo" / "report" / "index.html"));
   EXPECT_TRUE(fs::exists(root_ / "a" / "demo" / "report" / "orbit" / "frame_001.png"));
+
+  // Run again into the same folder: the previous demo's files are replaced, the user's kept.
+  WriteFileAtomic(root_ / "a" / "demo" / "photos" / "p.txt", "keep\n");
+  WriteFileAtomic(root_ / "a" / "demo" / "report" / "notes.txt", "mine\n");
+  ASSERT_EQ(Voltree("demo -o " + (root_ / "a" / "demo").string() + kTiny), 0);
+  EXPECT_EQ(ReadFile(root_ / "a" / "demo" / "photos" / "p.txt"), "keep\n");
+  EXPECT_EQ(ReadFile(root_ / "a" / "demo" / "report" / "notes.txt"), "mine\n");
+  EXPECT_TRUE(ReadFile(root_ / "a" / "demo" / "tree.vtree") == first);
+  EXPECT_TRUE(fs::exists(root_ / "a" / "demo" / ".voltree-demo"));
 }
 
 TEST_F(DemoCli, RefusesAFolderThatIsNotADemo) {
@@ -51,6 +60,11 @@ TEST_F(DemoCli, RefusesAFolderThatIsNotADemo) {
   EXPECT_NE(Voltree("demo -o " + mine.string() + kTiny + " 2>&1"), 0);
   EXPECT_EQ(ReadFile(mine / "notes.txt"), "keep me\n");
   EXPECT_FALSE(fs::exists(mine / "tree.vtree"));
+  // A demo.json alone does not make a folder the demo's (issue 14: it used to be replaced).
+  WriteFileAtomic(mine / "demo.json", "{}\n");
+  EXPECT_NE(Voltree("demo -o " + mine.string() + kTiny + " 2>&1"), 0);
+  EXPECT_EQ(ReadFile(mine / "notes.txt"), "keep me\n");
+  EXPECT_EQ(ReadFile(mine / "demo.json"), "{}\n");
 }
 
 }  // namespace

@@ -4,11 +4,13 @@
 #include "core/files.h"
 #include "reconstruct/volume_io.h"
 #include "synthetic_scene.h"
+#include "needs_two_cores.h"
 
 namespace voltree {
 namespace {
 
 TEST(Determinism, SameBytesForOneAndTwoThreads) {
+  VOLTREE_SKIP_UNLESS_TWO_CORES();
   const ReconstructInput input = testing::PhantomInput(testing::BlobPhantom(16), 12, 48);
   ReconstructOptions options;
   options.levels = 5;
