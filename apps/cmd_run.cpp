@@ -52,6 +52,10 @@ void AddRunCommand(CLI::App& app) {
   command->add_flag("--force", o.force,
                     "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: "
                     "refuse); existing mattes/ and sparse/ are always kept");
+  command->add_flag("--no-guards", [args](std::int64_t) { args->options.guards = false; },
+                    "Skip the guards that stop a run, writing no asset, when mattes cover most of a photo or almost "
+                    "nothing, disagree with each other through the cameras, or are not reproduced by the "
+                    "reconstruction (to inspect what such input gives)");
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {
     RunOptions options = args->options;

@@ -32,6 +32,14 @@ struct CalibrateOptions {
   int max_image_size = 1600;                   // --SiftExtraction.max_image_size
   int max_features = 8192;                     // --SiftExtraction.max_num_features
   std::string matcher = "exhaustive";          // or "sequential" for photos taken in a walk
+  // Affine-covariant SIFT (--SiftExtraction.estimate_affine_shape) and guided matching: the ground
+  // seen at 5 degrees and at 35 degrees differs by a strong affine squash, which plain SIFT does
+  // not match. Without them the eye-level ring of a studio set matched no photo of the upper ring
+  // and none of its 12 photos registered (oak, 24 views at 384²); with them 240-270 verified
+  // matches per low photo and 24/24 registered. Affine alone gives ~50 matches and no initial pair:
+  // guided matching (re-matching under the estimated geometry) supplies the rest.
+  bool affine_features = true;
+  bool guided_matching = true;
   double min_registered = 0.8;                 // fraction of the photos that must register
   FeatureMask mask = FeatureMask::kAll;
   double near_band = 0.15;                     // kNear: band width as a fraction of the image diagonal

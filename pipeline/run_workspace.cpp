@@ -2,7 +2,10 @@
 
 #include <cmath>
 
+#include "capture/colmap_binary.h"
 #include "compress/compress_workspace.h"
+#include "core/colmap_model.h"
+#include "core/image.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "pipeline/report_folder.h"
@@ -16,6 +19,52 @@ namespace {
 bool NeedsMattes(const fs::path& dir) { return !fs::is_directory(dir / "mattes"); }
 bool NeedsCameras(const fs::path& dir) { return !fs::is_directory(dir / "sparse"); }
 
+// The registered views (sparse/) and their mattes, in the same order.
+std::pair<std::vector<View>, std::vector<Image8>> LoadViewsAndMattes(const fs::path& dir) {
+  std::pair<std::vector<View>, std::vector<Image8>> loaded;
+  loaded.first = ReadColmapModel(dir / "sparse").Views();
+  for (const View& view : loaded.first) {
+    const fs::path matte = CompanionPath(dir, "mattes", view.name);
+    if (!fs::is_regular_file(matte))
+      Fail(matte.string(), ": missing matte for image '", view.name, "' (delete mattes/ to compute them all)");
+    loaded.second.push_back(ReadImage8(matte, 1));
+  }
+  return loaded;
+}
+
+// The mattes before any reconstruction: each covers a plausible part of its photo, and all of
+// them agree through the cameras.
+void CheckMattes(const fs::path& dir, const RunOptions& options, Progress& progress) {
+  const auto [views, mattes] = LoadViewsAndMattes(dir);
+  std::vector<NamedCoverage> coverages;
+  for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
+  CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
+  const MatteConsistency consistency = MeasureMatteConsistency(views, mattes, options.consistency);
+  double worst_recall = 1, worst_precision = 1;
+  for (const PhotoConsistency& photo : consistency.photos) {
+    worst_recall = std::min(worst_recall, photo.recall);
+    worst_precision = std::min(worst_precision, photo.precision);
+  }
+  progress.Say("check", Str("mattes against the cameras (visual hull of ", consistency.hull_voxels,
+                            " voxels): worst recall ", std::round(worst_recall * 1000) / 1000, ", worst precision ",
+                            std::round(worst_precision * 1000) / 1000));
+  CheckMatteConsistency(consistency, options.consistency, (dir / "mattes").string());
+}
+
+void CheckVolumeReproducesMattes(const fs::path& dir, const Volume& volume, const RunOptions& options,
+                                 Progress& progress) {
+  const auto [views, mattes] = LoadViewsAndMattes(dir);
+  const std::vector<ViewReproduction> reproduction = MeasureReproduction(volume, views, mattes, options.reproduction);
+  double recall = 0, precision = 0;
+  for (const ViewReproduction& view : reproduction) {
+    recall += view.recall / double(reproduction.size());
+    precision += view.precision / double(reproduction.size());
+  }
+  progress.Say("reconstruct", Str("the volume reproduces the mattes: mean recall ", std::round(recall * 1000) / 1000,
+                                  ", precision ", std::round(precision * 1000) / 1000));
+  CheckReproduction(reproduction, options.reproduction);
+}
+
 }  // namespace
 
 void RunOptions::Check() const {
@@ -25,6 +74,8 @@ void RunOptions::Check() const {
   reconstruct.Check();
   compress.Check();
   orbit.Check();
+  consistency.Check();
+  reproduction.Check();
 }
 
 void CheckRunWorkspace(const RunOptions& options) {
@@ -82,7 +133,11 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
                                   report.mean_reprojection_error, " px"));
   });
-  stage("reconstruct", true, "", [&] { ReconstructWorkspace(dir, options.reconstruct, options.force, &progress); });
+  stage("check", options.guards, "--no-guards", [&] { CheckMattes(dir, options, progress); });
+  stage("reconstruct", true, "", [&] {
+    const Volume volume = ReconstructWorkspace(dir, options.reconstruct, options.force, &progress);
+    if (options.guards) CheckVolumeReproducesMattes(dir, volume, options, progress);
+  });
   stage("compress", true, "", [&] {
     CompressWorkspaceOptions workspace_options;
     workspace_options.force = options.force;

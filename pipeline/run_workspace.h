@@ -1,7 +1,8 @@
 // `voltree run DIR`: the whole pipeline on a user's capture workspace, each stage only as needed:
 //   matte        when DIR/mattes/ is missing (capture/matte_workspace.h)
 //   calibrate    when DIR/sparse/ is missing: COLMAP, then the tree frame (capture/calibrate.h)
-//   reconstruct  DIR/volume/ (reconstruct/workspace.h)
+//   check        the mattes against each other and the cameras (coverage, visual hull): a guard
+//   reconstruct  DIR/volume/ (reconstruct/workspace.h), then a guard: it reproduces the mattes
 //   compress     DIR/tree.vtree (compress/compress_workspace.h)
 //   orbit        DIR/report/orbit/frame_NNN.png (render job)
 //   eval         DIR/report/{metrics.json,index.html,eval/}: held-out views when DIR/truth/
@@ -15,11 +16,14 @@
 #include <vector>
 
 #include "capture/calibrate.h"
+#include "capture/matte_consistency.h"
+#include "capture/matte_coverage.h"
 #include "capture/matte_workspace.h"
 #include "compress/compress_volume.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"
+#include "pipeline/reconstruction_guard.h"
 #include "reconstruct/reconstruct.h"
 
 namespace voltree {
@@ -32,6 +36,12 @@ struct RunOptions {
   CompressOptions compress;
   OrbitFramesOptions orbit;         // default 36 frames at 512x512
   EvaluateOptions evaluate;         // its workspace is set by RunWorkspace
+  // Guards: stop, writing no asset, when the mattes cover too much or too little of a photo, when
+  // they disagree with each other through the cameras, or when the reconstruction does not
+  // reproduce them. Off only to inspect what garbage in gives.
+  bool guards = true;
+  MatteConsistencyOptions consistency;
+  ReproductionOptions reproduction;
   // Replace what earlier runs left: volume/, tree.vtree, report/orbit/, and report files that
   // eval did not write. Mattes and cameras that exist are always kept (delete them to redo them).
   bool force = false;
