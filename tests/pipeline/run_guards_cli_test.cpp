@@ -1,7 +1,8 @@
 // `voltree run` never exits 0 with a garbage asset: on a tiny studio set with the true cameras
 // (8 views at 128x128, 4 levels), the good set runs through, and sets built to fail stop with
 // the guard's message naming the photos, writing no tree.vtree:
-//   - the mattes of two photos swapped (mattes of the wrong photos): the visual-hull check;
+//   - two mattes taken from photos of another tree (mattes of the wrong photos): the visual-hull
+//     check names those two;
 //   - the tree cut out of every matte (all black): the coverage check;
 //   - mattes that cover the whole frame, brought with `matte --mattes`: nothing is written;
 //   - bounds that hold only the lower part of the tree: the volume does not reproduce the mattes.
@@ -31,8 +32,9 @@ class RunGuards : public ::testing::Test {
     if (!fs::exists(VOLTREE_BINARY)) return;
     root_ = fs::temp_directory_path() / ("voltree_run_guards_" + std::to_string(::getpid()));
     fs::remove_all(root_);
-    built_ = Voltree("synth --tree young-oak --views 8 --held-out 2 --size 128x128 --backdrop plain --quiet -o " +
-                     (root_ / "set").string()) == 0;
+    const std::string synth = "synth --views 8 --held-out 2 --size 128x128 --backdrop plain --quiet ";
+    built_ = Voltree(synth + "--tree young-oak -o " + (root_ / "set").string()) == 0 &&
+             Voltree(synth + "--tree pine -o " + (root_ / "pine").string()) == 0;
   }
   static void TearDownTestSuite() {
     if (!root_.empty()) fs::remove_all(root_);
@@ -66,17 +68,17 @@ TEST_F(RunGuards, TheGoodSetRunsThrough) {
 }
 
 TEST_F(RunGuards, MattesOfTheWrongPhotosStop) {
-  const fs::path dir = Copy("swapped");
-  // view_000 and view_001 are 90 degrees apart on the lower ring.
-  fs::rename(dir / "mattes/view_000.png", dir / "mattes/tmp.png");
-  fs::rename(dir / "mattes/view_001.png", dir / "mattes/view_000.png");
-  fs::rename(dir / "mattes/tmp.png", dir / "mattes/view_001.png");
+  const fs::path dir = Copy("wrong_photos");
+  // Measured: these two 0.77 / 0.88 and 0.87 / 0.86 (recall / precision), the others >= 0.94.
+  for (const char* name : {"view_000.png", "view_005.png"})
+    fs::copy_file(root_ / "pine/mattes" / name, dir / "mattes" / name, fs::copy_options::overwrite_existing);
   EXPECT_NE(Run(dir), 0);
   const std::string errors = Errors(dir);
   EXPECT_NE(errors.find("disagree with the cameras"), std::string::npos) << errors;
   EXPECT_NE(errors.find("view_000.png"), std::string::npos) << errors;
-  EXPECT_NE(errors.find("view_001.png"), std::string::npos) << errors;
-  EXPECT_EQ(errors.find("view_005.png"), std::string::npos) << "a good photo was named:\n" << errors;
+  EXPECT_NE(errors.find("view_005.png"), std::string::npos) << errors;
+  for (const char* good : {"view_001.png", "view_003.png", "view_004.png", "view_006.png"})
+    EXPECT_EQ(errors.find(good), std::string::npos) << "a good photo was named:\n" << errors;
   EXPECT_FALSE(fs::exists(dir / "tree.vtree"));
   EXPECT_FALSE(fs::exists(dir / "volume"));
 }
