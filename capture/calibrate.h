@@ -67,6 +67,11 @@ struct CalibrateReport {
 CalibrateReport Calibrate(const std::filesystem::path& workspace, const CalibrateOptions& options,
                           Progress& progress);
 
+// Recomputes the tree's bounds in DIR/scene.json from DIR/mattes/ and the cameras in DIR/sparse/
+// (already in the tree frame, kept as they are): for mattes made after calibration. Throws Error
+// when the mattes' visual hull is empty.
+void UpdateBoundsFromMattes(const std::filesystem::path& workspace, const HullOptions& hull, Progress& progress);
+
 // Mean distance in pixels between each observation and its 3D point's projection; 0 without
 // observations (a model stripped of its POINTS2D).
 double MeanReprojectionError(const ColmapModel& model);

@@ -113,7 +113,142 @@ std::vector<PhotoMasks> MakeAllMasks(const std::vector<View>& views, const std::
   return masks;
 }
 
+struct CarvedHull {
+  Grid grid;
+  std::vector<uint8_t> kept;
+  std::vector<PhotoMasks> masks;
+};
+
+// Coarse: a cube around the point the cameras look at, as large as their mean distance; then
+// the kept voxels' bounds plus a margin at the same resolution.
+CarvedHull CarveTwice(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                      const MatteConsistencyOptions& options) {
+  const int allowed = std::max(1, int(std::floor(options.outvoted_fraction * double(views.size()))));
+  const int min_seen = std::max(2, int(std::ceil(options.min_seen_fraction * double(views.size()))));
+  const Eigen::Vector3d target = LookAtPoint(views);
+  double distance = 0;
+  for (const View& view : views) distance += (view.pose.Center() - target).norm();
+  distance /= double(views.size());
+  CarvedHull hull;
+  hull.grid = MakeGrid(target - Eigen::Vector3d::Constant(distance), target + Eigen::Vector3d::Constant(distance),
+                       options.resolution);
+  hull.masks = MakeAllMasks(views, mattes, options, hull.grid);
+  hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed);
+  Eigen::Vector3i low, high;
+  if (KeptBounds(hull.grid, hull.kept, &low, &high)) {
+    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(2 * hull.grid.voxel);
+    hull.grid = MakeGrid(hull.grid.min + hull.grid.voxel * low.cast<double>() - margin,
+                         hull.grid.min + hull.grid.voxel * (high + Eigen::Vector3i::Ones()).cast<double>() + margin,
+                         options.resolution);
+    hull.masks = MakeAllMasks(views, mattes, options, hull.grid);
+    hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed);
+  }
+  return hull;
+}
+
+// Whether a kept voxel has an empty face neighbour (only those shape the projection).
+bool OnSurface(const Grid& grid, const std::vector<uint8_t>& kept, int x, int y, int z) {
+  const int offsets[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const auto& o : offsets) {
+    const int nx = x + o[0], ny = y + o[1], nz = z + o[2];
+    if (nx < 0 || ny < 0 || nz < 0 || nx >= grid.cells.x() || ny >= grid.cells.y() || nz >= grid.cells.z()) return true;
+    if (!kept[grid.Index(nx, ny, nz)]) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                const std::vector<bool>& trusted, const std::vector<View>& targets,
+                                const MatteConsistencyOptions& options) {
+  options.Check();
+  std::vector<View> carve_views;
+  std::vector<Image8> carve_mattes;
+  for (size_t i = 0; i < views.size(); ++i)
+    if (i < trusted.size() && trusted[i]) {
+      carve_views.push_back(views[i]);
+      carve_mattes.push_back(mattes[i]);
+    }
+  if (carve_views.size() < 3) Fail("a visual hull needs at least 3 trusted mattes, got ", carve_views.size());
+  const CarvedHull hull = CarveTwice(carve_views, carve_mattes, options);
+  const Grid& grid = hull.grid;
+  std::vector<Eigen::Vector3d> surface;
+  for (int z = 0; z < grid.cells.z(); ++z)
+    for (int y = 0; y < grid.cells.y(); ++y)
+      for (int x = 0; x < grid.cells.x(); ++x)
+        if (hull.kept[grid.Index(x, y, z)] && OnSurface(grid, hull.kept, x, y, z)) surface.push_back(grid.Center(x, y, z));
+  std::vector<Image8> projections(targets.size());
+  tbb::parallel_for(size_t(0), targets.size(), [&](size_t v) {
+    const View& view = targets[v];
+    cv::Mat mask = cv::Mat::zeros(view.camera.height, view.camera.width, CV_8UC1);
+    for (const Eigen::Vector3d& point : surface) {
+      Eigen::Vector2d pixel;
+      const double depth = view.pose.ToCamera(point).z();
+      if (depth <= 0 || !view.WorldToPixel(point, &pixel)) continue;
+      const int radius = int(std::ceil(view.camera.FocalX() * grid.voxel * 0.87 / depth));
+      cv::circle(mask, cv::Point(int(std::floor(pixel.x())), int(std::floor(pixel.y()))), radius, 255, cv::FILLED);
+    }
+    // Interior voxels project inside the surface's outline: fill its holes.
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    cv::drawContours(mask, contours, -1, 255, cv::FILLED);
+    Image8 out(view.camera.width, view.camera.height, 1);
+    std::copy(mask.datastart, mask.dataend, out.pixels.begin());
+    projections[v] = std::move(out);
+  });
+  return projections;
+}
+
+std::vector<MinorityVotes> CountMinorityVotes(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                              const MatteConsistencyOptions& options) {
+  options.Check();
+  if (views.size() != mattes.size() || views.size() < 3) Fail("minority votes need one matte per view, 3 or more");
+  const int min_seen = std::max(2, int(std::ceil(options.min_seen_fraction * double(views.size()))));
+  const Eigen::Vector3d target = LookAtPoint(views);
+  double distance = 0;
+  for (const View& view : views) distance += (view.pose.Center() - target).norm();
+  distance /= double(views.size());
+  const Grid grid = MakeGrid(target - Eigen::Vector3d::Constant(0.6 * distance),
+                             target + Eigen::Vector3d::Constant(0.6 * distance), options.resolution);
+  const std::vector<PhotoMasks> masks = MakeAllMasks(views, mattes, options, grid);
+  // Per slice of z, then summed in slice order: the same totals whatever the threads.
+  std::vector<std::vector<MinorityVotes>> per_slice(grid.cells.z(), std::vector<MinorityVotes>(views.size()));
+  std::vector<size_t> majority_per_slice(grid.cells.z(), 0);
+  tbb::parallel_for(0, grid.cells.z(), [&](int z) {
+    std::vector<int8_t> vote(views.size());
+    for (int y = 0; y < grid.cells.y(); ++y)
+      for (int x = 0; x < grid.cells.x(); ++x) {
+        int seen = 0, tree = 0;
+        for (size_t v = 0; v < views.size(); ++v) {
+          cv::Point pixel;
+          vote[v] = -1;
+          if (!ProjectToMask(views[v], masks[v], grid.Center(x, y, z), &pixel)) continue;
+          vote[v] = masks[v].dilated.at<uint8_t>(pixel) != 0;
+          ++seen;
+          tree += vote[v];
+        }
+        if (seen < min_seen || tree == 0) continue;
+        const bool kept = 2 * tree >= seen;
+        majority_per_slice[z] += kept;
+        for (size_t v = 0; v < views.size(); ++v) {
+          if (kept && vote[v] == 0) ++per_slice[z][v].carves;
+          if (!kept && vote[v] == 1) ++per_slice[z][v].keeps;
+        }
+      }
+  });
+  std::vector<MinorityVotes> votes(views.size());
+  size_t majority = 0;
+  for (int z = 0; z < grid.cells.z(); ++z) {
+    majority += majority_per_slice[z];
+    for (size_t v = 0; v < views.size(); ++v) {
+      votes[v].carves += per_slice[z][v].carves;
+      votes[v].keeps += per_slice[z][v].keeps;
+    }
+  }
+  for (MinorityVotes& vote : votes) vote.majority_voxels = majority;
+  return votes;
+}
 
 void MatteConsistencyOptions::Check() const {
   if (resolution < 8 || resolution > 512) Fail("consistency hull resolution must be 8..512, got ", resolution);
@@ -133,29 +268,11 @@ MatteConsistency MeasureMatteConsistency(const std::vector<View>& views, const s
   if (views.size() != mattes.size() || views.size() < 3)
     Fail("matte consistency needs one matte per view and at least 3 views (", views.size(), " views, ",
          mattes.size(), " mattes)");
-  const int allowed = std::max(1, int(std::floor(options.outvoted_fraction * double(views.size()))));
-  const int min_seen = std::max(2, int(std::ceil(options.min_seen_fraction * double(views.size()))));
-
-  // Coarse: a cube around the point the cameras look at, as large as their mean distance; then
-  // the kept voxels' bounds plus a margin at the same resolution.
-  const Eigen::Vector3d target = LookAtPoint(views);
-  double distance = 0;
-  for (const View& view : views) distance += (view.pose.Center() - target).norm();
-  distance /= double(views.size());
-  Grid grid = MakeGrid(target - Eigen::Vector3d::Constant(distance), target + Eigen::Vector3d::Constant(distance),
-                       options.resolution);
-  std::vector<PhotoMasks> masks = MakeAllMasks(views, mattes, options, grid);
-  std::vector<uint8_t> kept = Carve(grid, views, masks, min_seen, allowed);
-  Eigen::Vector3i low, high;
+  CarvedHull hull = CarveTwice(views, mattes, options);
+  const Grid& grid = hull.grid;
+  const std::vector<uint8_t>& kept = hull.kept;
+  const std::vector<PhotoMasks>& masks = hull.masks;
   MatteConsistency result;
-  if (KeptBounds(grid, kept, &low, &high)) {
-    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(2 * grid.voxel);
-    grid = MakeGrid(grid.min + grid.voxel * low.cast<double>() - margin,
-                    grid.min + grid.voxel * (high + Eigen::Vector3i::Ones()).cast<double>() + margin,
-                    options.resolution);
-    masks = MakeAllMasks(views, mattes, options, grid);
-    kept = Carve(grid, views, masks, min_seen, allowed);
-  }
   for (uint8_t k : kept) result.hull_voxels += k;
   result.voxel_size = grid.voxel;
 

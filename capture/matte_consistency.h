@@ -49,6 +49,24 @@ struct MatteConsistency {
 MatteConsistency MeasureMatteConsistency(const std::vector<View>& views, const std::vector<Image8>& mattes,
                                          const MatteConsistencyOptions& options);
 
+// Majority voting over the voxels around the tree: a voxel is the tree's when at least half of
+// the photos that see it have it on their matte. A photo's minority votes say how often it
+// disagrees with the majority: `carves` voxels the majority keeps (its matte misses the tree),
+// `keeps` voxels the majority carves (its matte holds background).
+struct MinorityVotes {
+  size_t carves = 0, keeps = 0, majority_voxels = 0;
+};
+std::vector<MinorityVotes> CountMinorityVotes(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                              const MatteConsistencyOptions& options);
+
+// The visual hull carved from the `trusted` photos' mattes (at least 3), projected into each of
+// `targets` at its camera's size: 255 where the hull is, 0 elsewhere. The hull holds the tree
+// when the trusted mattes and the cameras are right, so the projection bounds the tree in any
+// photo.
+std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                const std::vector<bool>& trusted, const std::vector<View>& targets,
+                                const MatteConsistencyOptions& options);
+
 // Throws Error naming the photos below the limits (worst first), what their numbers mean and what
 // to try; `mattes_folder` is named in the message.
 void CheckMatteConsistency(const MatteConsistency& consistency, const MatteConsistencyOptions& options,

@@ -121,18 +121,30 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     progress.Say(name, Str("done in ", std::round(seconds * 10) / 10, " s"));
   };
 
-  stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
-    MatteWorkspaceOptions matte = options.matte;
-    matte.force = matte.force || options.force;
-    MatteWorkspace(dir, matte, progress);
-  });
-  stage("calibrate", NeedsCameras(dir), "sparse/ exists", [&] {
+  // Photos alone: the cameras first (features everywhere, bounds from the sparse points), so that
+  // the mattes can be checked against each other and the disagreeing ones matted again inside
+  // the hull of the others; then the bounds from the final mattes.
+  const bool photos_alone = NeedsMattes(dir) && NeedsCameras(dir) && options.calibrate_first;
+  const auto calibrate = [&] {
     CalibrateOptions calibrate = options.calibrate;
     calibrate.force = calibrate.force || options.force;
     const CalibrateReport report = Calibrate(dir, calibrate, progress);
     progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
                                   report.mean_reprojection_error, " px"));
+  };
+  if (photos_alone) stage("calibrate", true, "", calibrate);
+  stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
+    MatteWorkspaceOptions matte = options.matte;
+    matte.force = matte.force || options.force;
+    MatteWorkspace(dir, matte, progress);
+    if (photos_alone) {
+      HullRematteOptions rematte = options.rematte;
+      rematte.matte = options.matte.matte;
+      RematteWorkspaceFromHull(dir, rematte, progress);
+      UpdateBoundsFromMattes(dir, options.calibrate.hull, progress);
+    }
   });
+  if (!photos_alone) stage("calibrate", NeedsCameras(dir), "sparse/ exists", calibrate);
   stage("check", options.guards, "--no-guards", [&] { CheckMattes(dir, options, progress); });
   stage("reconstruct", true, "", [&] {
     const Volume volume = ReconstructWorkspace(dir, options.reconstruct, options.force, &progress);
