@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "capture/calibrate_accuracy.h"
+#include "capture/colmap_binary.h"
 #include "capture/matte_metrics.h"
 #include "capture/matte_workspace.h"
 #include "core/colmap_model.h"
@@ -80,7 +81,11 @@ void PrintRow(const std::string& tree, const std::string& backdrop, const std::s
   const std::vector<std::string> photos = ListImages(dir / "images");
   if (fs::exists(dir / "sparse") && input == "photos") {
     const std::vector<View> estimated = ReadColmapModel(dir / "sparse").Views();
-    registered = Str(estimated.size(), "/", photos.size());
+    // Per ring: the studio names ring 0's photos first (view_000 ... view_{n/2-1}).
+    size_t low = 0;
+    for (const View& view : estimated)
+      if (std::stoi(view.name.substr(5, 3)) < int(photos.size()) / 2) ++low;
+    registered = Str(low, " + ", estimated.size() - low, " / ", photos.size());
     if (estimated.size() >= 3) {
       const CameraAccuracy accuracy = CompareCameras(estimated, ReadColmapModel(truth / "sparse").Views());
       char text[64];
@@ -152,6 +157,9 @@ void RunCase(const std::string& tree, const std::string& backdrop, const BenchOp
   fs::create_directories(photos);
   fs::copy(truth / "images", photos / "images", fs::copy_options::recursive);
   fs::copy(truth / "truth", photos / "truth", fs::copy_options::recursive);
+  // The input photos' true cameras, for the evaluation to move the held-out views into the frame
+  // COLMAP found (pipeline/evaluation_truth.h).
+  fs::copy(truth / "sparse", photos / "truth" / "input_sparse", fs::copy_options::recursive);
   options.workspace = photos;
   try {
     const RunResult result = RunWorkspace(options, quiet);
@@ -195,7 +203,7 @@ int main(int argc, char** argv) {
     std::printf("%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error: worst "
                 "rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
                 bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels);
-    std::printf("| tree | backdrop | input | registered | camera error | matte MSE mean / worst | SAD mean / worst | "
+    std::printf("| tree | backdrop | input | registered (low + high ring) | camera error | matte MSE mean / worst | SAD mean / worst | "
                 "RGB PSNR | alpha PSNR | precision | recall | s: matte / calibrate / reconstruct / rest |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& tree : bench.trees)

@@ -23,6 +23,7 @@ void HullRematteOptions::Check() const {
   if (!(max_keep_ratio >= 1)) Fail("max keep ratio must be at least 1, got ", max_keep_ratio);
   if (!(min_trusted_fraction > 0 && min_trusted_fraction <= 1))
     Fail("min trusted fraction must be in (0, 1], got ", min_trusted_fraction);
+  if (guard_passes < 0 || guard_passes > 10) Fail("guard passes must be 0..10, got ", guard_passes);
   if (!(confident_alpha > 0 && confident_alpha <= 1)) Fail("confident alpha must be in (0, 1], got ", confident_alpha);
 }
 
@@ -60,46 +61,80 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
 
 }  // namespace
 
-HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vector<Image8>& photos,
-                                  std::vector<Image8>& mattes, const HullRematteOptions& options) {
-  options.Check();
-  if (views.size() != photos.size() || views.size() != mattes.size())
-    Fail("re-matting needs one photo and one matte per view");
-  // Trust: few minority votes of either kind. Keeps are relative to the median photo's (every
-  // matte keeps some background voxels that happen to project onto the tree).
-  const std::vector<MinorityVotes> votes = CountMinorityVotes(views, mattes, options.consistency);
-  std::vector<size_t> keeps;
-  for (const MinorityVotes& vote : votes) keeps.push_back(vote.keeps);
-  std::nth_element(keeps.begin(), keeps.begin() + keeps.size() / 2, keeps.end());
-  const double median_keeps = double(keeps[keeps.size() / 2]);
-  std::vector<bool> trusted(views.size());
+namespace {
+
+// Re-mattes the photos not `trusted` inside the hull of the trusted ones; returns their names
+// (none when too few are trusted).
+std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const std::vector<Image8>& photos,
+                                          std::vector<Image8>& mattes, const std::vector<bool>& trusted,
+                                          const HullRematteOptions& options) {
   std::vector<View> targets;
   std::vector<size_t> target_index;
-  HullRematteResult result;
-  for (size_t i = 0; i < views.size(); ++i) {
-    const MinorityVotes& vote = votes[i];
-    trusted[i] = double(vote.carves) <= options.max_carve_fraction * double(vote.majority_voxels) &&
-                 double(vote.keeps) <= options.max_keep_ratio * std::max(median_keeps, 1.0);
-    result.votes.push_back(Str(views[i].name, " ", vote.carves, "/", vote.majority_voxels, " ", vote.keeps));
-    if (trusted[i]) {
-      result.trusted.push_back(views[i].name);
-    } else {
+  for (size_t i = 0; i < views.size(); ++i)
+    if (!trusted[i]) {
       targets.push_back(views[i]);
       target_index.push_back(i);
     }
-  }
-  if (targets.empty() || double(result.trusted.size()) < options.min_trusted_fraction * double(views.size()) ||
-      result.trusted.size() < 3)
-    return result;
+  const size_t trusted_count = views.size() - targets.size();
+  if (targets.empty() || double(trusted_count) < options.min_trusted_fraction * double(views.size()) ||
+      trusted_count < 3)
+    return {};
   const std::vector<Image8> hulls = ProjectHull(views, mattes, trusted, targets, options.consistency);
   std::vector<Image8> rematted(targets.size());
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t t) {
     const size_t i = target_index[t];
     rematted[t] = MatteInsideHull(photos[i], mattes[i], hulls[t], options);
   });
+  std::vector<std::string> names;
   for (size_t t = 0; t < targets.size(); ++t) {
     mattes[target_index[t]] = std::move(rematted[t]);
-    result.rematted.push_back(targets[t].name);
+    names.push_back(targets[t].name);
+  }
+  return names;
+}
+
+}  // namespace
+
+HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vector<Image8>& photos,
+                                  std::vector<Image8>& mattes, const HullRematteOptions& options) {
+  options.Check();
+  if (views.size() != photos.size() || views.size() != mattes.size())
+    Fail("re-matting needs one photo and one matte per view");
+  // Pass 1, trust by majority: few minority votes of either kind. Keeps are relative to the
+  // median photo's (every matte keeps some background voxels that happen to project onto the
+  // tree). This survives half of the mattes being wrong.
+  const std::vector<MinorityVotes> votes = CountMinorityVotes(views, mattes, options.consistency);
+  std::vector<size_t> keeps;
+  for (const MinorityVotes& vote : votes) keeps.push_back(vote.keeps);
+  std::nth_element(keeps.begin(), keeps.begin() + keeps.size() / 2, keeps.end());
+  const double median_keeps = double(keeps[keeps.size() / 2]);
+  std::vector<bool> trusted(views.size());
+  HullRematteResult result;
+  for (size_t i = 0; i < views.size(); ++i) {
+    const MinorityVotes& vote = votes[i];
+    result.votes.push_back(Str(views[i].name, " ", vote.carves, "/", vote.majority_voxels, " ", vote.keeps));
+    trusted[i] = double(vote.carves) <= options.max_carve_fraction * double(vote.majority_voxels) &&
+                 double(vote.keeps) <= options.max_keep_ratio * std::max(median_keeps, 1.0);
+    if (trusted[i]) result.trusted.push_back(views[i].name);
+  }
+  result.rematted = RematteUntrusted(views, photos, mattes, trusted, options);
+  // Then trust by the guard's own test (matte_consistency.h) on the mended set: the photos it
+  // would name are matted again inside the hull of those it passes, a few times (each pass starts
+  // from the last mattes; measured on the oak at 512²: MSE mean 0.011 -> 0.006 from one more).
+  for (int pass = 0; pass < options.guard_passes; ++pass) {
+    const MatteConsistency scores = MeasureMatteConsistency(views, mattes, options.consistency);
+    bool all_pass = true;
+    for (size_t i = 0; i < views.size(); ++i) {
+      trusted[i] = scores.photos[i].recall >= options.consistency.min_recall &&
+                   scores.photos[i].precision >= options.consistency.min_precision;
+      all_pass = all_pass && trusted[i];
+    }
+    if (all_pass) break;
+    const std::vector<std::string> names = RematteUntrusted(views, photos, mattes, trusted, options);
+    if (names.empty()) break;
+    for (const std::string& name : names)
+      if (std::find(result.rematted.begin(), result.rematted.end(), name) == result.rematted.end())
+        result.rematted.push_back(name);
   }
   return result;
 }

@@ -6,6 +6,8 @@
 //      tree there: outside it (grown by a band) is background whatever its colour (skyline,
 //      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
 //      is unknown and solved from the photo's colours (alphamat::infoFlow by default).
+//   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
+//      matted again the same way inside the hull of those it passes.
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
 // one kind usually corrects the other.
 #pragma once
@@ -30,6 +32,7 @@ struct HullRematteOptions {
   double max_keep_ratio = 3.0;
   double min_trusted_fraction = 0.25;     // fewer trusted photos: nothing is changed
   double confident_alpha = 0.95;          // the old matte's tree kept as known foreground
+  int guard_passes = 3;                   // re-matting of the photos the guard would name, at most
   MatteOptions matte;                     // how the unknown is solved
   void Check() const;                     // throws Error naming the field
 };
