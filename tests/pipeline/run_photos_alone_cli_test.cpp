@@ -3,8 +3,9 @@
 // backdrop, default rings (5 and 35 degrees): real COLMAP, automatic mattes re-matted through the
 // cameras, reconstruction, compression, evaluation against the held-out views.
 // The set: oak, 24 views + 4 held out at 256x256 (fewer views do not give COLMAP an initial pair
-// at this size). Measured on the loaded 2-core machine: 24/24 registered, matte MSE mean 0.0096
-// and worst 0.028 against the true mattes; held-out recall and precision in the assertions.
+// at this size). Measured: 24/24 registered, matte MSE mean 0.0097 and worst 0.027 against the
+// true mattes, held-out recall 0.930, precision 0.854 (alpha PSNR 17.8 dB, RGB PSNR 26.8 dB);
+// 200 s on the loaded 2-core machine (most of it COLMAP's exhaustive matching).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -70,8 +71,8 @@ TEST(RunPhotosAlone, RegistersEveryPhotoMattesAndReconstructs) {
   const double precision = held_out.at("precision").at("mean").get<double>();
   std::printf("held-out recall %.3f precision %.3f alpha PSNR %.2f RGB PSNR %.2f\n", recall, precision,
               held_out.at("alpha_psnr").at("mean").get<double>(), held_out.at("rgb_psnr").at("mean").get<double>());
-  EXPECT_GT(recall, 0.5);
-  EXPECT_GT(precision, 0.5);
+  EXPECT_GT(recall, 0.85);     // measured 0.930
+  EXPECT_GT(precision, 0.75);  // measured 0.854
   fs::remove_all(root);
 }
 
