@@ -136,6 +136,12 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
   stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
     MatteWorkspaceOptions matte = options.matte;
     matte.force = matte.force || options.force;
+    // With the cameras known, a matte outside the coverage limits may still be mended by the
+    // re-matting below; the check stage applies the limits after it.
+    if (photos_alone) {
+      matte.coverage.min_coverage = 0;
+      matte.coverage.max_coverage = 1;
+    }
     MatteWorkspace(dir, matte, progress);
     if (photos_alone) {
       HullRematteOptions rematte = options.rematte;
