@@ -88,9 +88,16 @@ void PrintRow(const std::string& tree, const std::string& backdrop, const std::s
     registered = Str(low, " + ", estimated.size() - low, " / ", photos.size());
     if (estimated.size() >= 3) {
       const CameraAccuracy accuracy = CompareCameras(estimated, ReadColmapModel(truth / "sparse").Views());
-      char text[64];
-      std::snprintf(text, sizeof text, "%.2f° / %.2f %%", accuracy.max_rotation_degrees,
-                    100 * accuracy.max_center_error);
+      // The worst photo of each ring, all aligned together.
+      double rotation[2] = {0, 0}, centre[2] = {0, 0};
+      for (const CameraAccuracy::PerView& view : accuracy.views) {
+        const int ring = std::stoi(view.name.substr(5, 3)) < int(photos.size()) / 2 ? 0 : 1;
+        rotation[ring] = std::max(rotation[ring], view.rotation_degrees);
+        centre[ring] = std::max(centre[ring], view.center_error);
+      }
+      char text[96];
+      std::snprintf(text, sizeof text, "%.2f° / %.2f %% (low), %.2f° / %.2f %% (high)", rotation[0], 100 * centre[0],
+                    rotation[1], 100 * centre[1]);
       cameras = text;
     }
   } else if (input == "truth") {
@@ -200,8 +207,8 @@ int main(int argc, char** argv) {
   app.add_option("--work", bench.work, "Folder for the sets (replaced)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
-    std::printf("%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error: worst "
-                "rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
+    std::printf("%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error per ring: "
+                "worst rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
                 bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels);
     std::printf("| tree | backdrop | input | registered (low + high ring) | camera error | matte MSE mean / worst | SAD mean / worst | "
                 "RGB PSNR | alpha PSNR | precision | recall | s: matte / calibrate / reconstruct / rest |\n");
