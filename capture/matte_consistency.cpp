@@ -177,7 +177,8 @@ std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vecto
   for (int z = 0; z < grid.cells.z(); ++z)
     for (int y = 0; y < grid.cells.y(); ++y)
       for (int x = 0; x < grid.cells.x(); ++x)
-        if (hull.kept[grid.Index(x, y, z)] && OnSurface(grid, hull.kept, x, y, z)) surface.push_back(grid.Center(x, y, z));
+        if (hull.kept[grid.Index(x, y, z)] && OnSurface(grid, hull.kept, x, y, z))
+          surface.push_back(grid.Center(x, y, z));
   std::vector<Image8> projections(targets.size());
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t v) {
     const View& view = targets[v];

@@ -35,7 +35,8 @@ std::vector<ViewReproduction> MeasureReproduction(const Volume& volume, const st
                                                   const std::vector<Image8>& mattes,
                                                   const ReproductionOptions& options) {
   options.Check();
-  if (views.size() != mattes.size()) Fail("reproduction check: ", views.size(), " views but ", mattes.size(), " mattes");
+  if (views.size() != mattes.size())
+    Fail("reproduction check: ", views.size(), " views but ", mattes.size(), " mattes");
   if (volume.levels.empty()) Fail("reproduction check: the volume has no levels");
   const int level = int(volume.levels.size()) - 1;
   const VolumeLevel& finest = volume.levels[level];

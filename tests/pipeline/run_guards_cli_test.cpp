@@ -24,7 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::Voltree;
 
-constexpr const char* kRun = " --levels 4 --codebook 64 --alpha-codebook 64 --orbit 2 --orbit-size 64 --eval-levels auto --quiet";
+constexpr const char* kRun =
+    " --levels 4 --codebook 64 --alpha-codebook 64 --orbit 2 --orbit-size 64 --eval-levels auto --quiet";
 
 class RunGuards : public ::testing::Test {
  protected:
@@ -103,7 +104,8 @@ TEST_F(RunGuards, MattesCoveringTheFrameAreNotWritten) {
   Image8 white(128, 128, 1);
   std::fill(white.pixels.begin(), white.pixels.end(), 255);
   for (const auto& entry : fs::directory_iterator(dir / "images")) WriteImage(mine / entry.path().filename(), white);
-  EXPECT_NE(Voltree("matte " + dir.string() + " --quiet --mattes " + mine.string() + " 2> " + dir.string() + ".err"), 0);
+  EXPECT_NE(Voltree("matte " + dir.string() + " --quiet --mattes " + mine.string() + " 2> " + dir.string() + ".err"),
+            0);
   const std::string errors = Errors(dir);
   EXPECT_NE(errors.find("cover more than"), std::string::npos) << errors;
   EXPECT_FALSE(fs::exists(dir / "mattes"));
