@@ -103,8 +103,8 @@ void AddSynthCommand(CLI::App& app) {
   command->add_option("--fov", args->fov, "Field of view across the smaller image side, degrees")
       ->capture_default_str();
   command->add_option("--min-elevation", args->min_elevation,
-                      "Elevation of the lowest ring, degrees (the highest is 35); 5 is about eye level for a "
-                      "tree of a few metres")
+                      "Elevation of the lowest ring above the tree's middle, seen from the ring (the highest is 35); "
+                      "5 looks almost level at the tree, as a person holding the camera would")
       ->capture_default_str();
   command->add_option("--backdrop", args->backdrop,
                       "What stands behind the tree: realistic (a place: skyline, bushes, rocks, other trees) or "
