@@ -103,7 +103,7 @@ void AddSynthCommand(CLI::App& app) {
   command->add_option("--fov", args->fov, "Field of view across the smaller image side, degrees")
       ->capture_default_str();
   command->add_option("--min-elevation", args->min_elevation,
-                      "Elevation of the lowest ring above the tree's middle, seen from the ring (the highest is 35); "
+                      "Elevation of the lowest ring in degrees, seen from the middle of the tree's bounds (the highest is 35); "
                       "5 looks almost level at the tree, as a person holding the camera would")
       ->capture_default_str();
   command->add_option("--backdrop", args->backdrop,
