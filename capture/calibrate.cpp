@@ -30,6 +30,7 @@ void CalibrateOptions::Check() const {
          camera_params.size());
   if (max_image_size < 64) Fail("--max-image-size must be at least 64, got ", max_image_size);
   if (max_features < 64) Fail("--max-features must be at least 64, got ", max_features);
+  if (min_pose_inliers < 6) Fail("min pose inliers must be at least 6, got ", min_pose_inliers);
   if (matcher != "exhaustive" && matcher != "sequential")
     Fail("--matcher must be exhaustive or sequential, got '", matcher, "'");
   if (!(min_registered >= 0 && min_registered <= 1)) Fail("--min-registered must be in [0, 1], got ", min_registered);

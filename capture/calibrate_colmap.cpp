@@ -86,7 +86,8 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   stage(options.matcher + "_matcher", {"--database_path", database.string(), "--SiftMatching.use_gpu", "0",
                                        "--SiftMatching.guided_matching", options.guided_matching ? "1" : "0"});
   std::vector<std::string> map = {"--database_path", database.string(), "--image_path", images.string(),
-                                  "--output_path", sparse.string()};
+                                  "--output_path", sparse.string(), "--Mapper.abs_pose_min_num_inliers",
+                                  Str(options.min_pose_inliers)};
   if (!options.camera_params.empty())  // known intrinsics stay as given
     map.insert(map.end(), {"--Mapper.ba_refine_focal_length", "0", "--Mapper.ba_refine_principal_point", "0",
                            "--Mapper.ba_refine_extra_params", "0"});
