@@ -58,6 +58,10 @@ void AddCalibrateCommand(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   command->add_option("--hull-resolution", o.hull.resolution, "Voxels along the visual hull's longest side")
       ->capture_default_str();
+  command->add_flag("!--no-affine", o.affine_features,
+                    "Plain SIFT instead of affine-covariant SIFT (faster; photos from low and high rings then "
+                    "rarely match)");
+  command->add_flag("!--no-guided", o.guided_matching, "No guided matching (re-matching under the found geometry)");
   command->add_flag("--force", o.force, "Replace DIR/sparse, DIR/scene.json and COLMAP's database");
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {

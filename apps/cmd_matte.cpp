@@ -3,6 +3,7 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "capture/matte_hull_refine.h"
 #include "capture/matte_workspace.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -22,6 +23,7 @@ void AddMatteCommand(CLI::App& app) {
     int band = 0;
     bool force = false;
     bool quiet = false;
+    bool recheck = false;
     int threads = 0;
   };
   auto args = std::make_shared<Arguments>();
@@ -37,6 +39,10 @@ void AddMatteCommand(CLI::App& app) {
                       "Horizon row as a fraction of the photo height from the top (0..1); default: estimated");
   command->add_option("--band", args->band, "Unknown band half-width in pixels around ground edges (0: auto)");
   command->add_flag("--force", args->force, "Replace existing DIR/mattes and DIR/foreground");
+  command->add_flag("--recheck", args->recheck,
+                    "Check the existing DIR/mattes against each other through the cameras in DIR/sparse/ and matte "
+                    "again, inside the visual hull of the others, the photos that disagree (what 'run' does with "
+                    "photos alone); their mattes and foregrounds are replaced");
   command->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {
@@ -48,6 +54,13 @@ void AddMatteCommand(CLI::App& app) {
     options.force = args->force;
     options.threads = args->threads;
     Progress progress(args->quiet);
+    if (args->recheck) {
+      HullRematteOptions rematte;
+      rematte.matte = options.matte;
+      const HullRematteResult result = RematteWorkspaceFromHull(args->dir, rematte, progress);
+      for (const std::string& line : result.votes) progress.Say("matte", line);
+      return;
+    }
     const size_t count = MatteWorkspace(args->dir, options, progress);
     progress.Say("matte", Str("wrote ", count, " mattes and foregrounds in ", args->dir));
   });

@@ -16,10 +16,14 @@ void AddRunCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "run",
       "The whole pipeline on a capture workspace DIR holding images/ (your photos of one tree) and optionally "
-      "mattes/ and sparse/: matte (only when mattes/ is missing), calibrate with COLMAP (only when sparse/ is "
-      "missing), reconstruct (DIR/volume/), compress (DIR/tree.vtree), orbit renders (DIR/report/orbit/) and "
+      "mattes/ and sparse/: calibrate with COLMAP (only when sparse/ is missing), matte (only when mattes/ is "
+      "missing; with photos alone after calibrating, and the mattes that disagree through the cameras are matted "
+      "again inside the visual hull of the others), check the mattes (coverage, visual hull), reconstruct "
+      "(DIR/volume/), compress (DIR/tree.vtree), orbit renders (DIR/report/orbit/) and "
       "eval (DIR/report/index.html: held-out views when DIR/truth/ exists, else the input views only, which "
-      "measures self-consistency). Prints each stage's time and the evaluation table");
+      "measures self-consistency). Stops without writing an asset when a guard fails (a matte covering most of "
+      "its photo or almost nothing, mattes that disagree with the cameras, a reconstruction that does not "
+      "reproduce its mattes). Prints each stage's time and the evaluation table");
   struct Arguments {
     std::string levels = "7";
     std::string dir, refine = "infoflow", camera_model = "SIMPLE_RADIAL", matcher = "exhaustive", eval_levels = "all";
@@ -57,6 +61,10 @@ void AddRunCommand(CLI::App& app) {
   command->add_flag("--force", o.force,
                     "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: "
                     "refuse); existing mattes/ and sparse/ are always kept");
+  command->add_flag("--no-guards", [args](std::int64_t) { args->options.guards = false; },
+                    "Skip the guards that stop a run, writing no asset, when mattes cover most of a photo or almost "
+                    "nothing, disagree with each other through the cameras, or are not reproduced by the "
+                    "reconstruction (to inspect what such input gives)");
   command->add_flag("--quiet", args->quiet, "No progress lines");
   command->callback([args] {
     RunOptions options = args->options;

@@ -30,6 +30,7 @@ struct SynthArguments {
   std::string distortion;
   double fov = 40;
   double min_elevation = 5;  // lowest ring (degrees)
+  std::string backdrop = "realistic";
   std::string output;
   bool force = false;
   bool quiet = false;
@@ -47,6 +48,7 @@ void RunSynth(const SynthArguments& args) {
   if (!args.distortion.empty()) options.distortion = ParseNumbers("--distortion", args.distortion);
   options.fov_degrees = args.fov;
   options.min_elevation_degrees = args.min_elevation;
+  options.backdrop = BackdropStyleFromName(args.backdrop);
   TreeSource source;
   source.tree = args.tree;
   source.seed = args.seed;
@@ -72,7 +74,8 @@ void AddSynthCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "synth",
       "Photograph a synthetic tree in the photo studio: rings of cameras around a procedural or imported tree, "
-      "with sky and textured ground. Writes a capture workspace: images/, mattes/, foreground/, sparse/ (true "
+      "in front of a place (realistic: a skyline of hills, tree lines and buildings, bushes, rocks and other trees "
+      "on textured ground) or plain sky and ground. Writes a capture workspace: images/, mattes/, foreground/, sparse/ (true "
       "cameras), truth/ (held-out views, meta.json) and scene.json");
   auto args = std::make_shared<SynthArguments>();
   command->add_option("--tree", args->tree,
@@ -100,8 +103,12 @@ void AddSynthCommand(CLI::App& app) {
   command->add_option("--fov", args->fov, "Field of view across the smaller image side, degrees")
       ->capture_default_str();
   command->add_option("--min-elevation", args->min_elevation,
-                      "Elevation of the lowest ring, degrees (the highest is 35); COLMAP registers rings "
-                      "below about 15 degrees poorly (bench/calibrate)")
+                      "Elevation of the lowest ring in degrees, seen from the middle of the tree's bounds (the highest is 35); "
+                      "5 looks almost level at the tree, as a person holding the camera would")
+      ->capture_default_str();
+  command->add_option("--backdrop", args->backdrop,
+                      "What stands behind the tree: realistic (a place: skyline, bushes, rocks, other trees) or "
+                      "plain (sky and textured ground only). Mattes and truth are the tree's alone either way")
       ->capture_default_str();
   command->add_option("-o,--output", args->output, "Output workspace folder")->required();
   command->add_flag("--force", args->force, "Replace the output folder if it exists and is not empty");

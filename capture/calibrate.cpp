@@ -30,6 +30,7 @@ void CalibrateOptions::Check() const {
          camera_params.size());
   if (max_image_size < 64) Fail("--max-image-size must be at least 64, got ", max_image_size);
   if (max_features < 64) Fail("--max-features must be at least 64, got ", max_features);
+  if (min_pose_inliers < 6) Fail("min pose inliers must be at least 6, got ", min_pose_inliers);
   if (matcher != "exhaustive" && matcher != "sequential")
     Fail("--matcher must be exhaustive or sequential, got '", matcher, "'");
   if (!(min_registered >= 0 && min_registered <= 1)) Fail("--min-registered must be in [0, 1], got ", min_registered);
@@ -161,6 +162,26 @@ void WriteSceneJson(const fs::path& path, const CalibrateReport& report, const s
 }
 
 }  // namespace
+
+void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, Progress& progress) {
+  hull.Check();
+  const ColmapModel model = ReadColmapModel(workspace / "sparse");
+  const Bounds bounds = FindBounds(workspace, model, hull, progress);
+  if (bounds.source == "sparse points") Fail((workspace / "mattes").string(), ": not every photo has a matte");
+  CalibrateReport report;
+  report.bounds_min = bounds.min;
+  report.bounds_max = bounds.max;
+  report.units = "reconstruction";
+  std::string source = "colmap";
+  if (fs::exists(workspace / "scene.json")) {
+    const nlohmann::json scene = nlohmann::json::parse(ReadFile(workspace / "scene.json"));
+    report.units = scene.value("units", report.units);
+    source = scene.value("source", source);
+  }
+  WriteSceneJson(workspace / "scene.json", report, source);
+  progress.Say("calibrate", Str("bounds from the mattes' ", bounds.source, " written to ",
+                                (workspace / "scene.json").string()));
+}
 
 CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
   options.Check();

@@ -52,6 +52,7 @@ CameraAccuracy CompareCameras(const std::vector<View>& estimated, const std::vec
     const Pose aligned = TransformPose(pairs_estimated[i]->pose, align);
     const double angle = aligned.rotation.angularDistance(pairs_true[i]->pose.rotation) * 180.0 / M_PI;
     const double center = (align.Apply(from.col(i)) - to.col(i)).norm() / distance;
+    accuracy.views.push_back({pairs_true[i]->name, angle, center});
     accuracy.mean_rotation_degrees += angle / accuracy.matched;
     accuracy.max_rotation_degrees = std::max(accuracy.max_rotation_degrees, angle);
     accuracy.mean_center_error += center / accuracy.matched;

@@ -20,6 +20,11 @@ struct CameraAccuracy {
   // camera centre to the centroid of all of them (the tree, for an orbit).
   double mean_center_error = 0;
   double max_center_error = 0;
+  struct PerView {
+    std::string name;
+    double rotation_degrees = 0, center_error = 0;
+  };
+  std::vector<PerView> views;  // the matched views, in the truth's order
 };
 
 // Matches views by name, aligns estimated to true centres (Umeyama with scale; needs 3 matched

@@ -74,6 +74,7 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
                                       "--SiftExtraction.max_num_features", Str(options.max_features)};
   if (!options.camera_params.empty())
     extract.insert(extract.end(), {"--ImageReader.camera_params", JoinNumbers(options.camera_params)});
+  if (options.affine_features) extract.insert(extract.end(), {"--SiftExtraction.estimate_affine_shape", "1"});
   if (options.mask != FeatureMask::kAll) {
     const fs::path masks = colmap_folder / "masks";
     if (WriteFeatureMasks(workspace, masks, ListImages(images), options))
@@ -82,10 +83,11 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
       progress.Say("calibrate", "not every photo has a matte in mattes/; extracting features everywhere");
   }
   stage("feature_extractor", extract);
-  stage(options.matcher + "_matcher",
-        {"--database_path", database.string(), "--SiftMatching.use_gpu", "0"});
+  stage(options.matcher + "_matcher", {"--database_path", database.string(), "--SiftMatching.use_gpu", "0",
+                                       "--SiftMatching.guided_matching", options.guided_matching ? "1" : "0"});
   std::vector<std::string> map = {"--database_path", database.string(), "--image_path", images.string(),
-                                  "--output_path", sparse.string()};
+                                  "--output_path", sparse.string(), "--Mapper.abs_pose_min_num_inliers",
+                                  Str(options.min_pose_inliers)};
   if (!options.camera_params.empty())  // known intrinsics stay as given
     map.insert(map.end(), {"--Mapper.ba_refine_focal_length", "0", "--Mapper.ba_refine_principal_point", "0",
                            "--Mapper.ba_refine_extra_params", "0"});

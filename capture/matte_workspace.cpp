@@ -38,6 +38,7 @@ bool IsImageFile(const fs::path& path) {
 // One photo: its matte (computed or the user's) and its premultiplied foreground.
 struct MatteOutputs {
   Image8 alpha, foreground;
+  double coverage = 0;
   std::string summary;
 };
 
@@ -58,10 +59,8 @@ MatteOutputs MatteOnePhoto(const fs::path& photo_path, const MatteWorkspaceOptio
     out.foreground = PremultipliedForeground(photo, out.alpha);
     out.summary = Str("matte from ", matte_path.string());
   }
-  size_t covered = 0;
-  for (uint8_t a : out.alpha.pixels) covered += a;
-  out.summary += Str(", ", int(std::lround(100.0 * covered / 255.0 / std::max<size_t>(1, out.alpha.pixels.size()))),
-                     "% covered");
+  out.coverage = MatteCoverage(out.alpha);
+  out.summary += Str(", ", int(std::lround(100.0 * out.coverage)), "% covered");
   return out;
 }
 
@@ -69,6 +68,7 @@ MatteOutputs MatteOnePhoto(const fs::path& photo_path, const MatteWorkspaceOptio
 
 void MatteWorkspaceOptions::Check() const {
   matte.Check();
+  coverage.Check();
   if (threads < 0) Fail("--threads: ", threads, " must be 0 (all cores) or positive");
   if (!user_mattes.empty() && !fs::is_directory(user_mattes))
     Fail(user_mattes.string(), ": --mattes expects a folder of mattes named like the photos");
@@ -144,6 +144,7 @@ size_t MatteWorkspace(const fs::path& dir, const MatteWorkspaceOptions& options,
   std::optional<tbb::global_control> limit;
   if (options.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(options.threads));
   std::atomic<size_t> done{0};
+  std::vector<NamedCoverage> coverages(photos.size());
   progress.Say("matte", Str(photos.size(), " photos in ", (dir / "images").string(),
                             options.user_mattes.empty() ? Str(", refine ", RefineMethodName(options.matte.refine))
                                                         : Str(", mattes from ", options.user_mattes.string())));
@@ -154,8 +155,12 @@ size_t MatteWorkspace(const fs::path& dir, const MatteWorkspaceOptions& options,
     const std::string name = photos[i].stem().string() + ".png";
     WriteImage(mattes.path() / name, out.alpha);
     WriteImage(foreground.path() / name, out.foreground);
+    coverages[i] = {photos[i].filename().string(), out.coverage};
     progress.Say("matte", Str(++done, "/", photos.size(), " ", photos[i].filename().string(), ": ", out.summary));
   });
+  CheckMatteCoverage(coverages, options.coverage,
+                     options.user_mattes.empty() ? "computed" : Str("from ", options.user_mattes.string()),
+                     options.user_mattes.empty());
   mattes.Commit();
   foreground.Commit();
   return photos.size();

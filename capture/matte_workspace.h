@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "capture/matte_coverage.h"
 #include "capture/matte_options.h"
 #include "core/progress.h"
 
@@ -17,6 +18,8 @@ struct MatteWorkspaceOptions {
   MatteOptions matte;
   // A folder of the user's mattes (PNG alpha or grey, same stems as the photos); empty: compute.
   std::filesystem::path user_mattes;
+  // Mattes outside these limits stop the stage (nothing is written) with the photos named.
+  MatteCoverageLimits coverage;
   bool force = false;  // replace existing DIR/mattes and DIR/foreground
   int threads = 0;     // 0: all cores
   void Check() const;
@@ -34,7 +37,9 @@ std::filesystem::path FindUserMatte(const std::filesystem::path& mattes_dir, con
 void CheckMatteSize(const std::filesystem::path& matte, const std::filesystem::path& photo);
 
 // Writes DIR/mattes and DIR/foreground (each built aside and moved into place whole). Throws
-// Error before any work when they exist and `force` is off. Returns the number of photos.
+// Error before any work when they exist and `force` is off, and after the work, writing nothing,
+// when a matte covers too much or too little of its photo (options.coverage). Returns the number
+// of photos.
 size_t MatteWorkspace(const std::filesystem::path& dir, const MatteWorkspaceOptions& options, Progress& progress);
 
 }  // namespace voltree

@@ -2,7 +2,10 @@
 
 #include <cmath>
 
+#include "capture/colmap_binary.h"
 #include "compress/compress_workspace.h"
+#include "core/colmap_model.h"
+#include "core/image.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "pipeline/report_folder.h"
@@ -34,6 +37,52 @@ StageRecipe OrbitRecipe(const RunOptions& options) {
   return {"orbit", {"tree.vtree"}, {orbit.string()}, Str(options.orbit.frames, " ", options.orbit.size)};
 }
 
+// The registered views (sparse/) and their mattes, in the same order.
+std::pair<std::vector<View>, std::vector<Image8>> LoadViewsAndMattes(const fs::path& dir) {
+  std::pair<std::vector<View>, std::vector<Image8>> loaded;
+  loaded.first = ReadColmapModel(dir / "sparse").Views();
+  for (const View& view : loaded.first) {
+    const fs::path matte = CompanionPath(dir, "mattes", view.name);
+    if (!fs::is_regular_file(matte))
+      Fail(matte.string(), ": missing matte for image '", view.name, "' (delete mattes/ to compute them all)");
+    loaded.second.push_back(ReadImage8(matte, 1));
+  }
+  return loaded;
+}
+
+// The mattes before any reconstruction: each covers a plausible part of its photo, and all of
+// them agree through the cameras.
+void CheckMattes(const fs::path& dir, const RunOptions& options, Progress& progress) {
+  const auto [views, mattes] = LoadViewsAndMattes(dir);
+  std::vector<NamedCoverage> coverages;
+  for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
+  CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
+  const MatteConsistency consistency = MeasureMatteConsistency(views, mattes, options.consistency);
+  double worst_recall = 1, worst_precision = 1;
+  for (const PhotoConsistency& photo : consistency.photos) {
+    worst_recall = std::min(worst_recall, photo.recall);
+    worst_precision = std::min(worst_precision, photo.precision);
+  }
+  progress.Say("check", Str("mattes against the cameras (visual hull of ", consistency.hull_voxels,
+                            " voxels): worst recall ", std::round(worst_recall * 1000) / 1000, ", worst precision ",
+                            std::round(worst_precision * 1000) / 1000));
+  CheckMatteConsistency(consistency, options.consistency, (dir / "mattes").string());
+}
+
+void CheckVolumeReproducesMattes(const fs::path& dir, const Volume& volume, const RunOptions& options,
+                                 Progress& progress) {
+  const auto [views, mattes] = LoadViewsAndMattes(dir);
+  const std::vector<ViewReproduction> reproduction = MeasureReproduction(volume, views, mattes, options.reproduction);
+  double recall = 0, precision = 0;
+  for (const ViewReproduction& view : reproduction) {
+    recall += view.recall / double(reproduction.size());
+    precision += view.precision / double(reproduction.size());
+  }
+  progress.Say("reconstruct", Str("the volume reproduces the mattes: mean recall ", std::round(recall * 1000) / 1000,
+                                  ", precision ", std::round(precision * 1000) / 1000));
+  CheckReproduction(reproduction, options.reproduction);
+}
+
 }  // namespace
 
 void RunOptions::Check() const {
@@ -43,6 +92,8 @@ void RunOptions::Check() const {
   reconstruct.Check();
   compress.Check();
   orbit.Check();
+  consistency.Check();
+  reproduction.Check();
 }
 
 void CheckRunWorkspace(const RunOptions& options) {
@@ -89,20 +140,38 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     progress.Say(name, Str("done in ", std::round(seconds * 10) / 10, " s"));
   };
 
-  stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
-    MatteWorkspaceOptions matte = options.matte;
-    matte.force = matte.force || options.force;
-    MatteWorkspace(dir, matte, progress);
-  });
-  stage("calibrate", NeedsCameras(dir), "sparse/ exists", [&] {
+  // Photos alone: the cameras first (features everywhere, bounds from the sparse points), so that
+  // the mattes can be checked against each other and the disagreeing ones matted again inside
+  // the hull of the others; then the bounds from the final mattes.
+  const bool photos_alone = NeedsMattes(dir) && NeedsCameras(dir) && options.calibrate_first;
+  const auto calibrate = [&] {
     CalibrateOptions calibrate = options.calibrate;
     calibrate.force = calibrate.force || options.force;
     const CalibrateReport report = Calibrate(dir, calibrate, progress);
     progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
                                   report.mean_reprojection_error, " px"));
+  };
+  if (photos_alone) stage("calibrate", true, "", calibrate);
+  stage("matte", NeedsMattes(dir), "mattes/ exists", [&] {
+    MatteWorkspaceOptions matte = options.matte;
+    matte.force = matte.force || options.force;
+    // With the cameras known, a matte outside the coverage limits may still be mended by the
+    // re-matting below; the check stage applies the limits after it.
+    if (photos_alone) {
+      matte.coverage.min_coverage = 0;
+      matte.coverage.max_coverage = 1;
+    }
+    MatteWorkspace(dir, matte, progress);
+    if (photos_alone) {
+      HullRematteOptions rematte = options.rematte;
+      rematte.matte = options.matte.matte;
+      RematteWorkspaceFromHull(dir, rematte, progress);
+      UpdateBoundsFromMattes(dir, options.calibrate.hull, progress);
+    }
   });
+  if (!photos_alone) stage("calibrate", NeedsCameras(dir), "sparse/ exists", calibrate);
+  stage("check", options.guards, "--no-guards", [&] { CheckMattes(dir, options, progress); });
   // A resumable stage runs when --force or when its record does not match; the record is dropped
-  // before it runs and written once it finished.
   // before it runs and written once it finished. `replace`: its outputs may be replaced.
   auto resumable = [&](const StageRecipe& recipe, auto&& work) {
     stage(recipe.stage.c_str(), options.force || !StageIsUpToDate(dir, recipe), kUpToDate, [&] {
@@ -112,8 +181,10 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
       RecordStage(dir, recipe);
     });
   };
-  resumable(ReconstructRecipe(options),
-            [&](bool replace) { ReconstructWorkspace(dir, options.reconstruct, replace, &progress); });
+  resumable(ReconstructRecipe(options), [&](bool replace) {
+    const Volume volume = ReconstructWorkspace(dir, options.reconstruct, replace, &progress);
+    if (options.guards) CheckVolumeReproducesMattes(dir, volume, options, progress);
+  });
   result.asset = dir / "tree.vtree";
   resumable(CompressRecipe(options), [&](bool replace) {
     CompressWorkspaceOptions workspace_options;

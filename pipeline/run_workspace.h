@@ -1,12 +1,15 @@
 // `voltree run DIR`: the whole pipeline on a user's capture workspace, each stage only as needed:
-//   matte        when DIR/mattes/ is missing (capture/matte_workspace.h)
-//   calibrate    when DIR/sparse/ is missing: COLMAP, then the tree frame (capture/calibrate.h)
-//   reconstruct  DIR/volume/ (reconstruct/workspace.h)
+//   calibrate    when DIR/sparse/ is missing: COLMAP, then the tree frame (capture/calibrate.h);
+//                first when both mattes/ and sparse/ are missing (photos alone)
+//   matte        when DIR/mattes/ is missing (capture/matte_workspace.h); with photos alone the
+//                mattes that disagree through the cameras are matted again (matte_hull_refine.h)
+//   check        the mattes against each other and the cameras (coverage, visual hull): a guard
+//   reconstruct  DIR/volume/ (reconstruct/workspace.h), then a guard: it reproduces the mattes
 //   compress     DIR/tree.vtree (compress/compress_workspace.h)
 //   orbit        DIR/report/orbit/frame_NNN.png (render job)
 //   eval         DIR/report/{metrics.json,index.html,eval/}: held-out views when DIR/truth/
 //                exists, always the input views (self-consistency)
-// Mattes come first: calibration bounds the tree with their visual hull.
+// When only the cameras are missing, calibration bounds the tree with the mattes' visual hull.
 #pragma once
 
 #include <filesystem>
@@ -15,11 +18,15 @@
 #include <vector>
 
 #include "capture/calibrate.h"
+#include "capture/matte_consistency.h"
+#include "capture/matte_coverage.h"
+#include "capture/matte_hull_refine.h"
 #include "capture/matte_workspace.h"
 #include "compress/compress_volume.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"
+#include "pipeline/reconstruction_guard.h"
 #include "reconstruct/reconstruct.h"
 
 namespace voltree {
@@ -32,6 +39,17 @@ struct RunOptions {
   CompressOptions compress;
   OrbitFramesOptions orbit;         // default 36 frames at 512x512
   EvaluateOptions evaluate;         // its workspace is set by RunWorkspace
+  // Guards: stop, writing no asset, when the mattes cover too much or too little of a photo, when
+  // they disagree with each other through the cameras, or when the reconstruction does not
+  // reproduce them. Off only to inspect what garbage in gives.
+  bool guards = true;
+  // With photos alone (neither mattes/ nor sparse/): calibrate first, then matte, then re-matte
+  // the photos whose mattes disagree with the others inside the others' visual hull. Off: the
+  // mattes first and the calibration bounded by their hull (the order before).
+  bool calibrate_first = true;
+  HullRematteOptions rematte;
+  MatteConsistencyOptions consistency;
+  ReproductionOptions reproduction;
   // Replace what earlier runs left: volume/, tree.vtree, report/orbit/, and report files that
   // eval did not write. Mattes and cameras that exist are always kept (delete them to redo them).
   bool force = false;

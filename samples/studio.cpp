@@ -110,6 +110,7 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
   nlohmann::json meta = {
       {"tree", options.tree_name},
       {"seed", options.seed},
+      {"backdrop", BackdropStyleName(options.backdrop)},
       {"views", options.views},
       {"held_out", options.held_out},
       {"rings", options.rings},

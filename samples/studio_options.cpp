@@ -7,6 +7,16 @@
 
 namespace voltree {
 
+BackdropStyle BackdropStyleFromName(const std::string& name) {
+  if (name == "realistic") return BackdropStyle::kRealistic;
+  if (name == "plain") return BackdropStyle::kPlain;
+  Fail("--backdrop '", name, "': expected realistic or plain");
+}
+
+const char* BackdropStyleName(BackdropStyle style) {
+  return style == BackdropStyle::kRealistic ? "realistic" : "plain";
+}
+
 void StudioOptions::Check() const {
   if (views < 1) Fail("studio: views must be at least 1, got ", views);
   if (rings < 1 || rings > views) Fail("studio: rings must be in 1..views (", views, "), got ", rings);

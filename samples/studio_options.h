@@ -9,6 +9,13 @@
 
 namespace voltree {
 
+// What stands behind the tree. kRealistic: a place (a skyline of hills, tree lines and buildings,
+// bushes, rocks and other trees on textured ground), what COLMAP and the matting face in real
+// photos. kPlain: sky and textured ground only (the studio before the realistic backdrop).
+enum class BackdropStyle { kRealistic, kPlain };
+BackdropStyle BackdropStyleFromName(const std::string& name);  // "realistic", "plain"; Error otherwise
+const char* BackdropStyleName(BackdropStyle style);
+
 struct StudioOptions {
   std::string tree_name = "mesh";  // recorded in truth/meta.json
   int views = 24;                  // input photos, spread over the rings
@@ -20,7 +27,8 @@ struct StudioOptions {
   // The same for the sky and ground, at most `supersample`: they need anti-aliasing, not
   // fractional coverage, and are the costliest shader (2x2 is a quarter of the 4x4 time).
   int backdrop_supersample = 2;
-  uint64_t seed = 1;               // ground and sky texture, first azimuth of the rings
+  uint64_t seed = 1;               // ground and sky texture, clutter, first azimuth of the rings
+  BackdropStyle backdrop = BackdropStyle::kRealistic;
   CameraModel camera_model = CameraModel::kPinhole;
   // The model's parameters after focal length and principal point (SIMPLE_RADIAL: k;
   // RADIAL: k1 k2; OPENCV: k1 k2 p1 p2); empty means no distortion.

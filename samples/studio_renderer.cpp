@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "samples/studio_rig.h"
 
 namespace voltree {
 namespace {
@@ -22,6 +23,13 @@ std::pair<double, double> DepthRange(const View& view, const Eigen::Vector3d& lo
   return {near, farthest};
 }
 
+// The realistic backdrop's clutter, kept outside the camera ring; none for the plain one.
+ClutterLayout StudioClutter(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const StudioOptions& options) {
+  if (options.backdrop == BackdropStyle::kPlain) return {};
+  const StudioRig rig = MakeStudioRig(lo, hi, options);
+  return MakeStudioClutter(options.seed, rig.target.head<2>(), hi.z() - lo.z(), 1.15 * rig.distance);
+}
+
 }  // namespace
 
 StudioRenderer::StudioRenderer(const TreeMesh& mesh, const StudioOptions& options)
@@ -30,7 +38,8 @@ StudioRenderer::StudioRenderer(const TreeMesh& mesh, const StudioOptions& option
       bounds_min_(mesh.Bounds().first.cast<double>()),
       bounds_max_(mesh.Bounds().second.cast<double>()),
       tree_(mesh),
-      backdrop_(options.seed, (bounds_max_ - bounds_min_).maxCoeff()) {}
+      backdrop_(options.seed, (bounds_max_ - bounds_min_).maxCoeff(), StudioClutter(bounds_min_, bounds_max_, options),
+                MakeStudioRig(bounds_min_, bounds_max_, options).target.head<2>()) {}
 
 const Framebuffer& StudioRenderer::Target(const View& view, int supersample, std::unique_ptr<Framebuffer>& target) {
   const int width = view.camera.width * supersample, height = view.camera.height * supersample;

@@ -1,0 +1,54 @@
+// Mattes from the whole capture: once the cameras are known, the photos whose automatic matte
+// disagrees with the others are matted again inside the visual hull of the photos that agree.
+//   1. Trust: majority voting over voxels; a photo that often disagrees with the majority (misses
+//      what most see as tree, or holds what most see as background) is not trusted.
+//   2. The hull of the trusted photos alone, projected into each untrusted photo, bounds the
+//      tree there: outside it (grown by a band) is background whatever its colour (skyline,
+//      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
+//      is unknown and solved from the photo's colours (alphamat::infoFlow by default).
+//   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
+//      matted again the same way inside the hull of those it passes.
+// Photos with sky behind the crown and those with ground behind it fail in different ways, so
+// one kind usually corrects the other.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "capture/matte_consistency.h"
+#include "capture/matte_options.h"
+#include "core/camera.h"
+#include "core/image.h"
+#include "core/progress.h"
+
+namespace voltree {
+
+struct HullRematteOptions {
+  MatteConsistencyOptions consistency;
+  // A photo is trusted when it carves at most this fraction of the majority's voxels and keeps at
+  // most this many times the median photo's background voxels (matte_consistency.h).
+  double max_carve_fraction = 0.15;
+  double max_keep_ratio = 3.0;
+  double min_trusted_fraction = 0.25;     // fewer trusted photos: nothing is changed
+  double confident_alpha = 0.95;          // the old matte's tree kept as known foreground
+  int guard_passes = 3;                   // re-matting of the photos the guard would name, at most
+  MatteOptions matte;                     // how the unknown is solved
+  void Check() const;                     // throws Error naming the field
+};
+
+struct HullRematteResult {
+  std::vector<std::string> trusted, rematted;
+  std::vector<std::string> votes;  // per photo: "name carves/majority keeps"
+};
+
+// `photos[i]` (RGB) and `mattes[i]` (1 channel, replaced for re-matted photos) belong to views[i].
+HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vector<Image8>& photos,
+                                  std::vector<Image8>& mattes, const HullRematteOptions& options);
+
+// The workspace form: DIR/sparse/, DIR/images/, DIR/mattes/ in; the re-matted photos' mattes and
+// foregrounds replaced (each file written aside and renamed).
+HullRematteResult RematteWorkspaceFromHull(const std::filesystem::path& dir, const HullRematteOptions& options,
+                                           Progress& progress);
+
+}  // namespace voltree
