@@ -260,6 +260,7 @@ void MatteConsistencyOptions::Check() const {
     Fail("min seen fraction must be in (0, 1], got ", min_seen_fraction);
   if (max_side < 16) Fail("comparison size must be at least 16, got ", max_side);
   if (!(min_recall >= 0 && min_recall <= 1)) Fail("min recall must be in [0, 1], got ", min_recall);
+  if (min_photos < 2) Fail("consistency min_photos must be at least 2, got ", min_photos);
   if (!(min_precision >= 0 && min_precision <= 1)) Fail("min precision must be in [0, 1], got ", min_precision);
 }
 

@@ -30,6 +30,9 @@ struct MatteConsistencyOptions {
   // are too alike to tell apart (oak, two mattes swapped: 0.92 / 0.92 at worst).
   double min_recall = 0.9;
   double min_precision = 0.9;
+  // Fewer photos carve a hull too loose to judge a matte by (4 true mattes of the young oak at
+  // 32²: precision 0.68-0.87): the guard then skips this check and says so.
+  int min_photos = 8;
   void Check() const;  // throws Error naming the field
 };
 

@@ -125,6 +125,19 @@ Eigen::Vector3d Camera::Unproject(const Eigen::Vector2d& pixel) const {
   return {n.x(), n.y(), 1.0};
 }
 
+Camera Camera::Resized(int new_width, int new_height) const {
+  Camera out = *this;
+  out.width = new_width, out.height = new_height;
+  const double sx = double(new_width) / width, sy = double(new_height) / height;
+  auto& p = out.params;
+  switch (model) {
+    case CameraModel::kPinhole:
+    case CameraModel::kOpenCV: p[0] *= sx, p[1] *= sy, p[2] *= sx, p[3] *= sy; break;
+    default: p[0] *= 0.5 * (sx + sy), p[1] *= sx, p[2] *= sy; break;  // one focal length, then cx, cy
+  }
+  return out;
+}
+
 Camera Camera::Pinhole(int width, int height, double focal_x, double focal_y, double cx, double cy) {
   return Camera{CameraModel::kPinhole, width, height, {focal_x, focal_y, cx, cy}};
 }

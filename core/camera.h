@@ -44,6 +44,9 @@ struct Camera {
   Eigen::Vector2d Undistort(const Eigen::Vector2d& distorted) const;
 
   static Camera Pinhole(int width, int height, double focal_x, double focal_y, double cx, double cy);
+  // The same lens with the image resampled to width x height: focal lengths and principal point
+  // scale with the image, distortion (in normalized coordinates) does not.
+  Camera Resized(int new_width, int new_height) const;
 };
 
 // World-to-camera rigid transform.

@@ -6,8 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "reconstruct/dda.h"
-#include "reconstruct/grid.h"
+#include "reconstruct/billboard_raster.h"
 
 namespace voltree {
 namespace {
@@ -39,30 +38,27 @@ std::vector<ViewReproduction> MeasureReproduction(const Volume& volume, const st
     Fail("reproduction check: ", views.size(), " views but ", mattes.size(), " mattes");
   if (volume.levels.empty()) Fail("reproduction check: the volume has no levels");
   const int level = int(volume.levels.size()) - 1;
-  const VolumeLevel& finest = volume.levels[level];
-  std::vector<CellCoord> coords(finest.cells.begin(), finest.cells.end());
-  const LevelCells cells(finest.resolution, coords);
-  const GridWindow window{volume.origin, volume.CellSize(level), cells.box_min(), cells.box_max()};
 
   std::vector<ViewReproduction> result(views.size());
   tbb::parallel_for(size_t(0), views.size(), [&](size_t v) {
     const View& view = views[v];
     const Image8& matte = mattes[v];
+    const auto own = std::find_if(volume.views.begin(), volume.views.end(),
+                                  [&](const VolumeView& candidate) { return candidate.name == view.name; });
+    if (own == volume.views.end()) Fail("reproduction check: the volume has no view '", view.name, "'");
+    // The finest level's billboards of this view, drawn as the renderer draws them here.
     const double shrink = std::min(1.0, double(options.max_side) / std::max(matte.width, matte.height));
-    const int width = std::max(1, int(std::lround(matte.width * shrink)));
-    const int height = std::max(1, int(std::lround(matte.height * shrink)));
-    const double to_camera_x = double(view.camera.width) / width, to_camera_y = double(view.camera.height) / height;
+    View small = view;
+    small.camera = view.camera.Resized(std::max(1, int(std::lround(matte.width * shrink))),
+                                       std::max(1, int(std::lround(matte.height * shrink))));
+    const ViewBlend alone{int(own - volume.views.begin()), -1, 1, 0};
+    const ImageF drawn =
+        CompositeLayers(RasterizeLevel(volume, level, small, alone, options.billboard_scale), volume.levels[level].texels);
+    const int width = small.camera.width, height = small.camera.height;
     size_t both = 0, in_matte = 0, in_volume = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
-        const Ray ray{view.pose.Center(), view.PixelRay({(x + 0.5) * to_camera_x, (y + 0.5) * to_camera_y})};
-        double depth = 0;
-        TraverseGrid(window, ray, 0.0, 1e30, [&](int cx, int cy, int cz, double length, double) {
-          const int32_t j = cells.Find(cx, cy, cz);
-          if (j >= 0) depth += finest.density[j] * length;
-          return true;
-        });
-        const bool volume_covers = 1 - std::exp(-depth) > options.covered_alpha;
+        const bool volume_covers = drawn.at(x, y, 3) > options.covered_alpha;
         const bool matte_covers = MeanAlpha(matte, x * matte.width / width, y * matte.height / height,
                                             (x + 1) * matte.width / width, (y + 1) * matte.height / height) >
                                   options.covered_alpha;

@@ -57,6 +57,11 @@ void CheckMattes(const fs::path& dir, const RunOptions& options, Progress& progr
   std::vector<NamedCoverage> coverages;
   for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
   CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
+  if (int(views.size()) < options.consistency.min_photos) {
+    progress.Say("check", Str("only ", views.size(), " photos: their visual hull is too loose to check the mattes "
+                              "against each other (needs ", options.consistency.min_photos, ")"));
+    return;
+  }
   const MatteConsistency consistency = MeasureMatteConsistency(views, mattes, options.consistency);
   double worst_recall = 1, worst_precision = 1;
   for (const PhotoConsistency& photo : consistency.photos) {

@@ -53,19 +53,11 @@ ImageF AreaResample(const ImageF& in, int width, int height) {
   return out;
 }
 
-// The camera with its image scaled by `factor` (< 1 shrinks); distortion is unchanged.
+// The camera with its image scaled by `factor` (< 1 shrinks).
 View ScaledView(const View& view, double factor) {
   View out = view;
-  Camera& camera = out.camera;
-  camera.width = std::max(1, int(std::lround(view.camera.width * factor)));
-  camera.height = std::max(1, int(std::lround(view.camera.height * factor)));
-  const double sx = double(camera.width) / view.camera.width, sy = double(camera.height) / view.camera.height;
-  auto& p = camera.params;
-  switch (camera.model) {
-    case CameraModel::kPinhole:
-    case CameraModel::kOpenCV: p[0] *= sx, p[1] *= sy, p[2] *= sx, p[3] *= sy; break;
-    default: p[0] *= 0.5 * (sx + sy), p[1] *= sx, p[2] *= sy; break;  // one focal length, then cx, cy
-  }
+  out.camera = view.camera.Resized(std::max(1, int(std::lround(view.camera.width * factor))),
+                                   std::max(1, int(std::lround(view.camera.height * factor))));
   return out;
 }
 

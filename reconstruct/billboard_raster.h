@@ -55,6 +55,8 @@ std::array<float, 4> SampleLayer(const BillboardLayer& layer, const float* texel
 
 // The composited image (premultiplied RGBA in [0, 1] over transparent black).
 ImageF CompositeLayers(const LayerImage& image, const std::vector<float>& texels);
+// The same from a level's 8-bit texels (VolumeLevel::texels), without a float copy of them all.
+ImageF CompositeLayers(const LayerImage& image, const std::vector<uint8_t>& texels);
 
 // The level's texels as floats in [0, 1] (premultiplied RGBA, four per texel).
 std::vector<float> TexelsAsFloat(const VolumeLevel& level);
