@@ -25,6 +25,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A report folder that eval had to create is removed again if eval fails before filling it, so
+// a failed run leaves no empty report/ behind.
+class CreatedFolder {
+ public:
+  explicit CreatedFolder(const fs::path& path) : path_(path), created_(fs::create_directories(path)) {}
+  ~CreatedFolder() {
+    std::error_code ignored;
+    if (created_ && !kept_ && fs::is_empty(path_, ignored)) fs::remove(path_, ignored);
+  }
+  void Keep() { kept_ = true; }
+
+ private:
+  fs::path path_;
+  bool created_ = false, kept_ = false;
+};
+
 // held_out/a/b.png -> "a_b": report file names are flat.
 std::string FlatStem(const std::string& view_name) {
   std::string stem = fs::path(view_name).replace_extension().string();
@@ -225,7 +241,7 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
                            " held-out and ", inputs.size(), " input views x ", choices.size(), " level settings on ",
                            result.renderer));
 
-  fs::create_directories(report);
+  CreatedFolder report_folder(report);
   StagedDirectory staged(report / kEvalFolderName, /*force=*/true);  // ownership checked above
   WriteFileAtomic(staged.path() / kEvalMarkerName, Str("written by ", kEvalGenerator, "; replaced on every run\n"));
   fs::create_directories(staged.path() / "held_out");
@@ -278,6 +294,7 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
     result.notes.push_back("plots not drawn (turned off)");
   }
   staged.Commit();
+  report_folder.Keep();
 
   // metrics.json: deterministic for a given asset and renderer (no timings). Paths inside the
   // workspace are written relative to it, so a staged workspace reads the same once renamed.

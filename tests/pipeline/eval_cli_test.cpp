@@ -145,6 +145,17 @@ TEST_F(EvalCli, BudgetMeasuresEveryStepAndAgreesWithTheRenderer) {
   EXPECT_NE(ReadFile(report / "index.html").find("Error budget"), std::string::npos);
 }
 
+// A failed evaluation (a held-out truth image is missing) leaves no report folder behind.
+TEST_F(EvalCli, AFailedRunLeavesNoEmptyReport) {
+  fs::rename(dir_ / "truth" / "rgba" / "held_001.png", dir_ / "held_001.png.aside");
+  const fs::path report = dir_ / "failed_report";
+  const int status = Voltree("eval " + dir_.string() + " --levels auto --no-plots --quiet --report " +
+                             report.string() + " > /dev/null 2>&1");
+  fs::rename(dir_ / "held_001.png.aside", dir_ / "truth" / "rgba" / "held_001.png");
+  EXPECT_NE(status, 0);
+  EXPECT_FALSE(fs::exists(report));
+}
+
 TEST_F(EvalCli, RefusesToReplaceAReportItDidNotWrite) {
   const fs::path report = dir_ / "user_report";
   fs::create_directories(report);
