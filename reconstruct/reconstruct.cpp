@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -158,15 +159,21 @@ void CheckReconstructInput(const ReconstructInput& input, const ReconstructOptio
   if (!extent.allFinite() || extent.minCoeff() < 0 || extent.maxCoeff() <= 0)
     Fail(src, ": scene bounds [", input.bounds_min.transpose(), "] .. [", input.bounds_max.transpose(),
          "] are empty or not finite");
+  double widest_pixels = 0;  // the bounds' largest projected extent over the views
   for (const View& view : input.views) {
     double x0, y0, x1, y1;
     const bool in_front = ProjectBox(view, input.bounds_min, input.bounds_max, &x0, &y0, &x1, &y1);
+    if (in_front) widest_pixels = std::max({widest_pixels, x1 - x0, y1 - y0});
     if (!in_front || x1 <= 0 || y1 <= 0 || x0 >= view.camera.width || y0 >= view.camera.height)
       Fail(src, ": view '", view.name, "' does not see the scene bounds [", input.bounds_min.transpose(), "] .. [",
            input.bounds_max.transpose(), "]",
            in_front ? " (they project outside the image)" : " (they are behind or around the camera)",
            "; check the cameras and scene.json");
   }
+  if (widest_pixels < 1)
+    Fail(src, ": scene bounds [", input.bounds_min.transpose(), "] .. [", input.bounds_max.transpose(),
+         "] are smaller than one pixel in every view (", widest_pixels, " px at most): there is nothing to "
+         "reconstruct in them; check scene.json");
   const uint8_t empty_at = CarveThreshold8(options.carve_alpha);
   bool any_alpha = false;
   for (size_t v = 0; v < input.views.size(); ++v) {

@@ -37,6 +37,15 @@ TEST(BadInput, CamerasThatDoNotSeeTheBounds) {
   EXPECT_NE(error.find("view 'view_000.png' does not see the scene bounds"), std::string::npos) << error;
 }
 
+TEST(BadInput, BoundsSmallerThanAPixel) {
+  ReconstructInput input = SmallInput();
+  input.bounds_min = Eigen::Vector3d::Constant(1e-30);  // a user's scene.json: [1e-30]^3 .. [2e-30]^3
+  input.bounds_max = Eigen::Vector3d::Constant(2e-30);
+  const std::string error = ErrorOf(input);
+  EXPECT_NE(error.find("smaller than one pixel in every view"), std::string::npos) << error;
+  EXPECT_NE(error.find("scene.json"), std::string::npos) << error;
+}
+
 TEST(BadInput, AllZeroMattes) {
   ReconstructInput input = SmallInput();
   for (Image8& m : input.mattes) std::fill(m.pixels.begin(), m.pixels.end(), 0);
