@@ -24,6 +24,10 @@ std::pair<Eigen::Vector3f, Eigen::Vector3f> TreeMesh::Bounds() const {
 
 void TreeMesh::Check() const {
   if (vertices.empty() || TriangleCount() == 0) Fail("the mesh has no triangles");
+  for (size_t v = 0; v < vertices.size(); ++v)
+    if (!vertices[v].position.allFinite() || !vertices[v].normal.allFinite() || !vertices[v].uv.allFinite())
+      Fail("mesh vertex ", v, " has a coordinate that is not a finite number (position ",
+           vertices[v].position.transpose(), "); expected finite positions, normals and texture coordinates");
   for (size_t g = 0; g < groups.size(); ++g) {
     const MeshGroup& group = groups[g];
     if (group.indices.size() % 3 != 0) Fail("mesh group ", g, " has an index count not divisible by 3");
