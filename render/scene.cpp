@@ -119,11 +119,17 @@ SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index, c
   }
   instance.asset = int(found - assets.begin());
   const std::vector<double> p = check.Numbers(check.Required(j, "position", field), field + ".position", 3);
+  // Far beyond any landscape, and where cameras and depth ranges computed from it overflow.
+  constexpr double kLargest = 1e9;
+  for (double coordinate : p)
+    if (std::abs(coordinate) > kLargest)
+      check.Wrong(field + ".position", "must lie within +-1e9 scene units, got ", j["position"].dump());
   instance.transform.translation = Eigen::Vector3d(p[0], p[1], p[2]);
   if (j.contains("rotation")) instance.transform.rotation_degrees = check.Number(j["rotation"], field + ".rotation");
   if (j.contains("scale")) {
     instance.transform.scale = check.Number(j["scale"], field + ".scale");
-    if (!(instance.transform.scale > 0)) check.Wrong(field + ".scale", "must be > 0, got ", j["scale"].dump());
+    if (!(instance.transform.scale > 0 && instance.transform.scale <= kLargest))
+      check.Wrong(field + ".scale", "must be > 0 and at most 1e9, got ", j["scale"].dump());
   }
   return instance;
 }

@@ -71,7 +71,10 @@ TEST(Scene, ErrorsNameTheFileAndTheField) {
   EXPECT_EQ(ParseError(kValid), "");
   EXPECT_EQ(ParseError(Edited(R"("asset": "pine")", R"("asset": "oka")")),
             R"(scene.json: instances[1].asset "oka" is not one of the assets (oak, pine, young-oak))");
-  EXPECT_EQ(ParseError(Edited(R"("scale": 1.5)", R"("scale": -2)")), "scene.json: instances[0].scale must be > 0, got -2");
+  EXPECT_EQ(ParseError(Edited(R"("scale": 1.5)", R"("scale": -2)")),
+            "scene.json: instances[0].scale must be > 0 and at most 1e9, got -2");
+  EXPECT_EQ(ParseError(Edited(R"("position": [-3, 0, 0.5])", R"("position": [1e308, 0, 0.5])")),
+            "scene.json: instances[1].position must lie within +-1e9 scene units, got [1e+308,0,0.5]");
   EXPECT_EQ(ParseError(Edited(R"("scale": 1.5)", R"("scael": 1.5)")),
             "scene.json: unknown key instances[0].scael (expected asset, position, rotation, scale)");
   EXPECT_EQ(ParseError(Edited(R"("ground")", R"("grund")")),
