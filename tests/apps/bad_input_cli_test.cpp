@@ -20,30 +20,17 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "pipeline/voltree_binary.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
 // Root ignores file permissions; as root, permission cases run as the user "nobody".
 std::string Unprivileged() { return ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : ""; }
 
-Outcome RunVoltree(const std::string& arguments, const fs::path& cwd, bool unprivileged = false) {
-  Outcome outcome;
-  const std::string command = Str("cd '", cwd.string(), "' && ", unprivileged ? Unprivileged() : "", "'",
-                                  VOLTREE_BINARY, "' ", arguments, " 2>&1");
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return outcome;
-  std::array<char, 4096> buffer;
-  for (size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) outcome.output.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+test::Outcome RunVoltree(const std::string& arguments, const fs::path& cwd, bool unprivileged = false) {
+  return test::VoltreeCaptured(arguments, cwd.string(), unprivileged ? Unprivileged() : "");
 }
 
 // A photo with some structure (a dark trunk-like bar on a sky gradient).
@@ -221,14 +208,16 @@ TEST_P(BadInput, FailsClearlyAndLeavesTheUsersFilesAlone) {
   const BadInputCase& bad = Cases()[GetParam()];
   bad.prepare(dir_);
   const Snapshot before = TakeSnapshot(dir_);
-  const Outcome outcome = RunVoltree(bad.arguments, dir_, bad.unprivileged);
+  const test::Outcome outcome = RunVoltree(bad.arguments, dir_, bad.unprivileged);
   EXPECT_EQ(outcome.status, bad.exit_status) << bad.name << "\n" << outcome.output;
   for (const char* word : bad.key_words)
     EXPECT_NE(outcome.output.find(word), std::string::npos) << bad.name << ": no '" << word << "' in\n" << outcome.output;
   EXPECT_EQ(outcome.output.find("internal error"), std::string::npos) << outcome.output;
   EXPECT_EQ(outcome.output.find(".partial-"), std::string::npos) << "names a staging folder: " << outcome.output;
   Snapshot after = TakeSnapshot(dir_);
-  if (bad.creates) EXPECT_EQ(after.erase(bad.creates), 1u) << bad.name << ": no " << bad.creates;
+  if (bad.creates) {
+    EXPECT_EQ(after.erase(bad.creates), 1u) << bad.name << ": no " << bad.creates;
+  }
   EXPECT_TRUE(after == before) << bad.name << ": the user's files changed";
   EXPECT_TRUE(StagingLeftovers(dir_).empty()) << StagingLeftovers(dir_).front();
 }

@@ -15,24 +15,11 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "matte_test_scene.h"
+#include "pipeline/voltree_binary.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-Outcome RunVoltree(const std::string& arguments, const fs::path& log) {
-  const std::string command = Str("'", VOLTREE_BINARY, "' ", arguments, " > '", log.string(), "' 2>&1");
-  Outcome outcome;
-  const int status = std::system(command.c_str());
-  outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  outcome.output = fs::exists(log) ? ReadFile(log) : "";
-  return outcome;
-}
 
 class MatteCliTest : public ::testing::Test {
  protected:
@@ -46,7 +33,7 @@ class MatteCliTest : public ::testing::Test {
   void TearDown() override {
     if (!dir_.empty()) fs::remove_all(dir_);
   }
-  Outcome Run(const std::string& arguments) { return RunVoltree(arguments, dir_ / "log.txt"); }
+  test::Outcome Run(const std::string& arguments) { return test::VoltreeCaptured(arguments); }
 
   fs::path dir_;
 };
@@ -55,7 +42,7 @@ TEST_F(MatteCliTest, MattesAWorkspaceAndRefusesToOverwrite) {
   const test::MatteScene scene = test::MakeMatteScene(160, 128, 5);
   const fs::path workspace = dir_ / "ws";
   WriteImage(workspace / "images" / "view_000.png", scene.photo);
-  Outcome outcome = Run(Str("matte '", workspace.string(), "' --refine guided"));
+  test::Outcome outcome = Run(Str("matte '", workspace.string(), "' --refine guided"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   EXPECT_NE(outcome.output.find("1/1 view_000.png"), std::string::npos) << outcome.output;  // progress line
   EXPECT_LT(CompareMattes(ReadImage8(workspace / "mattes" / "view_000.png"), scene.alpha).mse, 1.5);
@@ -80,7 +67,7 @@ TEST_F(MatteCliTest, ImportsUserMattes) {
   Image8 rgba(scene.alpha.width, scene.alpha.height, 4, 255);
   for (size_t i = 0; i < scene.alpha.pixels.size(); ++i) rgba.pixels[i * 4 + 3] = scene.alpha.pixels[i];
   WriteImage(dir_ / "user" / "a.png", rgba);
-  const Outcome outcome = Run(Str("matte '", workspace.string(), "' --quiet --mattes '", (dir_ / "user").string(), "'"));
+  const test::Outcome outcome = Run(Str("matte '", workspace.string(), "' --quiet --mattes '", (dir_ / "user").string(), "'"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   EXPECT_EQ(ReadImage8(workspace / "mattes" / "a.png"), scene.alpha);
   // Premultiplied foreground recovered from the photo and the matte: measured mean error 4.5/255
@@ -108,7 +95,7 @@ TEST_F(MatteCliTest, ImportsUserMattes) {
 // photos alone `run` mends those through the cameras (tests/pipeline/run_photos_alone_cli_test).
 TEST_F(MatteCliTest, MattesAStudioSet) {
   const fs::path workspace = dir_ / "oak";
-  Outcome outcome = Run(Str("synth --tree oak --views 4 --held-out 1 --size 256x256 --backdrop plain --quiet -o '",
+  test::Outcome outcome = Run(Str("synth --tree oak --views 4 --held-out 1 --size 256x256 --backdrop plain --quiet -o '",
                             workspace.string(), "'"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   fs::rename(workspace / "mattes", dir_ / "true_mattes");
