@@ -5,12 +5,24 @@
 #include <string>
 
 #include "apps/commands.h"
-#include "apps/option_parsing.h"
 #include "apps/eval_table.h"
+#include "apps/option_registry.h"
+#include "apps/stage_options.h"
 #include "core/progress.h"
 #include "pipeline/run_workspace.h"
 
 namespace voltree::app {
+namespace {
+
+void PrintStageTimes(const RunResult& result) {
+  std::printf("%-12s %9s\n", "stage", "seconds");
+  for (const StageTime& stage : result.stages) {
+    if (stage.what == "ran") std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
+    else std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
+  }
+}
+
+}  // namespace
 
 void AddRunCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
@@ -25,65 +37,32 @@ void AddRunCommand(CLI::App& app) {
       "its photo or almost nothing, mattes that disagree with the cameras, a reconstruction that does not "
       "reproduce its mattes). Prints each stage's time and the evaluation table");
   struct Arguments {
-    std::string levels = "7";
-    std::string dir, refine = "infoflow", camera_model = "SIMPLE_RADIAL", matcher = "exhaustive", eval_levels = "all";
     RunOptions options;
-    bool no_fit = false, quiet = false;
+    int threads = 0;
+    bool quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   RunOptions& o = args->options;
-  command->add_option("DIR", args->dir, "Capture workspace with images/ (and optionally mattes/, sparse/, truth/)")
+  command->add_option("DIR", o.workspace, "Capture workspace with images/ (and optionally mattes/, sparse/, truth/)")
       ->required();
-  command->add_option("--refine", args->refine, "Matting when mattes/ is missing: infoflow, guided or none")
-      ->capture_default_str();
-  command->add_option("--camera-model", args->camera_model,
-                      "COLMAP camera model when sparse/ is missing: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, "
-                      "OPENCV")
-      ->capture_default_str();
-  command->add_option("--max-image-size", o.calibrate.max_image_size,
-                      "COLMAP feature extraction: longest side in pixels")
-      ->capture_default_str();
-  command->add_option("--matcher", args->matcher, "COLMAP matcher: exhaustive, or sequential for photos in a walk")
-      ->capture_default_str();
-  command->add_option("--levels", args->levels,
-                      "Hierarchy levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as the photos fill (a finest texel covers about one photo pixel)")
-      ->capture_default_str();
-  command->add_flag("--no-fit", args->no_fit,
-                    "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)");
-  command->add_option("--codebook", o.compress.colour_codebook, "Colour codebook size")->capture_default_str();
-  command->add_option("--alpha-codebook", o.compress.alpha_codebook, "Alpha codebook size")->capture_default_str();
-  command->add_option("--orbit", o.orbit.frames, "Orbit frames rendered into DIR/report/orbit/")->capture_default_str();
-  command->add_option("--orbit-size", o.orbit.size, "Orbit frame side in pixels (square)")->capture_default_str();
-  command->add_option("--eval-levels", args->eval_levels,
-                      "all: evaluate the renderer's LOD and each octree level forced; auto: only the LOD (faster on "
-                      "large photos)")
-      ->capture_default_str();
-  command->add_flag("--force", o.force,
-                    "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: "
-                    "refuse); existing mattes/ and sparse/ are always kept");
-  command->add_flag("--no-guards", [args](std::int64_t) { args->options.guards = false; },
-                    "Skip the guards that stop a run, writing no asset, when mattes cover most of a photo or almost "
-                    "nothing, disagree with each other through the cameras, or are not reproduced by the "
-                    "reconstruction (to inspect what such input gives)");
-  command->add_flag("--quiet", args->quiet, "No progress lines");
+  AddCalibrateOptions(*command, o.calibrate);
+  AddMatteOptions(*command, o.matte.matte);
+  AddReconstructOptions(*command, o.reconstruct);
+  AddCompressOptions(*command, o.compress);
+  AddOrbitOptions(*command, o.orbit);
+  AddEvaluateOptions(*command, o.evaluate);
+  AddFlag(*command, "--no-guards", o.guards);
+  AddThreadsOption(*command, args->threads);
+  AddFlag(*command, "--force", o.force,
+          "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: refuse); "
+          "existing mattes/ and sparse/ are always kept");
+  AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     RunOptions options = args->options;
-    options.workspace = args->dir;
-    options.reconstruct.fit.enabled = !args->no_fit;
-    options.reconstruct.levels = ParseLevels("--levels", args->levels);
-    options.reconstruct.auto_levels = options.reconstruct.levels == 0;
-    if (options.reconstruct.auto_levels) options.reconstruct.levels = 7;  // replaced once the photos are read
-    options.matte.matte.refine = ParseRefineMethod(args->refine);
-    options.calibrate.camera_model = args->camera_model;
-    options.calibrate.matcher = args->matcher;
-    options.evaluate.each_level = EachLevelFromName(args->eval_levels, "--eval-levels");
+    options.matte.threads = options.reconstruct.threads = args->threads;
     Progress progress(args->quiet);
     const RunResult result = RunWorkspace(options, progress);
-    std::printf("%-12s %9s\n", "stage", "seconds");
-    for (const StageTime& stage : result.stages) {
-      if (stage.what == "ran") std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
-      else std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
-    }
+    PrintStageTimes(result);
     PrintEvaluation(result.evaluation);
   });
 }

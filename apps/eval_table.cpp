@@ -31,9 +31,4 @@ void PrintEvaluation(const EvaluateResult& result) {
   std::printf("%s\n", result.index_html.string().c_str());
 }
 
-bool EachLevelFromName(const std::string& value, const char* option) {
-  if (value != "all" && value != "auto") Fail(option, " '", value, "': expected all or auto");
-  return value == "all";
-}
-
 }  // namespace voltree::app

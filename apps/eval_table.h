@@ -14,8 +14,4 @@ std::string EvaluationTable(const LevelMetricsTable& table);
 // The table, eval's notes and the path of the report page, on stdout.
 void PrintEvaluation(const EvaluateResult& result);
 
-// The value of an option choosing which levels eval renders: "all" (the LOD and every octree level
-// forced) -> true, "auto" (the LOD only) -> false; anything else fails naming `option`.
-bool EachLevelFromName(const std::string& value, const char* option);
-
 }  // namespace voltree::app

@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
       options.branching = config.branching;
       options.levels = config.levels;
       options.threads = t;
-      options.iterations = iterations;
+      options.opacity.sart.iterations = iterations;
       options.texels = texels;
       options.fit.enabled = !no_fit;
       double peak_mb = 0;

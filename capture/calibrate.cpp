@@ -26,18 +26,18 @@ FeatureMask FeatureMaskFromName(const std::string& name) {
 void CalibrateOptions::Check() const {
   const CameraModel model = CameraModelFromName(camera_model);
   if (!camera_params.empty() && int(camera_params.size()) != CameraModelParamCount(model))
-    Fail("--camera-params: ", camera_model, " needs ", CameraModelParamCount(model), " values, got ",
+    FailOption("CalibrateOptions.camera_params", "for ", camera_model, " needs ", CameraModelParamCount(model), " values, got ",
          camera_params.size());
-  if (max_image_size < 64) Fail("--max-image-size must be at least 64, got ", max_image_size);
-  if (max_features < 64) Fail("--max-features must be at least 64, got ", max_features);
-  if (min_pose_inliers < 6) Fail("min pose inliers must be at least 6, got ", min_pose_inliers);
+  if (max_image_size < 64) FailOption("CalibrateOptions.max_image_size", "must be at least 64, got ", max_image_size);
+  if (max_features < 64) FailOption("CalibrateOptions.max_features", "must be at least 64, got ", max_features);
+  if (min_pose_inliers < 6) FailOption("CalibrateOptions.min_pose_inliers", "must be at least 6, got ", min_pose_inliers);
   if (matcher != "exhaustive" && matcher != "sequential")
-    Fail("--matcher must be exhaustive or sequential, got '", matcher, "'");
-  if (!(min_registered >= 0 && min_registered <= 1)) Fail("--min-registered must be in [0, 1], got ", min_registered);
-  if (!(near_band > 0 && near_band < 1)) Fail("near band must be in (0, 1), got ", near_band);
-  if (up && !(up->norm() > 0 && up->allFinite())) Fail("--up must be a non-zero direction");
-  if (height_metres && !(*height_metres > 0)) Fail("--height must be positive, got ", *height_metres);
-  if (!import_model.empty() && !known_cameras.empty()) Fail("--import and --known-cameras exclude each other");
+    FailOption("CalibrateOptions.matcher", "must be exhaustive or sequential, got '", matcher, "'");
+  if (!(min_registered >= 0 && min_registered <= 1)) FailOption("CalibrateOptions.min_registered", "must be in [0, 1], got ", min_registered);
+  if (!(near_band > 0 && near_band < 1)) FailOption("CalibrateOptions.near_band", "must be in (0, 1), got ", near_band);
+  if (up && !(up->norm() > 0 && up->allFinite())) FailOption("CalibrateOptions.up", "must be a non-zero direction");
+  if (height_metres && !(*height_metres > 0)) FailOption("CalibrateOptions.height_metres", "must be positive, got ", *height_metres);
+  if (!import_model.empty() && !known_cameras.empty()) FailOption("CalibrateOptions.import_model", "and --known-cameras exclude each other");
   hull.Check();
 }
 

@@ -69,7 +69,7 @@ MatteOutputs MatteOnePhoto(const fs::path& photo_path, const MatteWorkspaceOptio
 void MatteWorkspaceOptions::Check() const {
   matte.Check();
   coverage.Check();
-  if (threads < 0) Fail("--threads: ", threads, " must be 0 (all cores) or positive");
+  if (threads < 0) FailOption("MatteWorkspaceOptions.threads", "must be 0 (all cores) or positive, got ", threads);
   if (!user_mattes.empty() && !fs::is_directory(user_mattes))
     Fail(user_mattes.string(), ": --mattes expects a folder of mattes named like the photos");
 }

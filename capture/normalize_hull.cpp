@@ -13,10 +13,10 @@
 namespace voltree {
 
 void HullOptions::Check() const {
-  if (resolution < 4 || resolution > 1024) Fail("hull resolution must be 4..1024, got ", resolution);
-  if (!(matte_threshold > 0 && matte_threshold < 1)) Fail("matte threshold must be in (0, 1), got ", matte_threshold);
+  if (resolution < 4 || resolution > 1024) FailOption("HullOptions.resolution", "must be in 4..1024, got ", resolution);
+  if (!(matte_threshold > 0 && matte_threshold < 1)) FailOption("HullOptions.matte_threshold", "must be in (0, 1), got ", matte_threshold);
   if (!(min_seen_fraction > 0 && min_seen_fraction <= 1))
-    Fail("min seen fraction must be in (0, 1], got ", min_seen_fraction);
+    FailOption("HullOptions.min_seen_fraction", "must be in (0, 1], got ", min_seen_fraction);
 }
 
 namespace {

@@ -16,7 +16,7 @@ uint8_t RoundToByte(float value) { return static_cast<uint8_t>(std::clamp(std::l
 ColourSpace ParseColourSpace(const std::string& name) {
   if (name == "lab") return ColourSpace::kLab;
   if (name == "rgb") return ColourSpace::kRgb;
-  Fail("--space: expected 'lab' or 'rgb', got '", name, "'");
+  Fail("unknown colour space '", name, "'; expected lab or rgb");
 }
 
 std::string ColourSpaceName(ColourSpace space) { return space == ColourSpace::kLab ? "lab" : "rgb"; }

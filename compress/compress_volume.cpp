@@ -63,10 +63,12 @@ void CellBounds(const Volume& volume, Eigen::Vector3d& low, Eigen::Vector3d& hig
 
 void CompressOptions::Check() const {
   if (colour_codebook < 1 || colour_codebook > 65536)
-    Fail("--codebook: expected 1..65536, got ", colour_codebook);
+    FailOption("CompressOptions.colour_codebook", "must be in 1..65536, got ", colour_codebook);
   if (alpha_codebook < 1 || alpha_codebook > 65536)
-    Fail("--alpha-codebook: expected 1..65536, got ", alpha_codebook);
-  if (black_threshold < 0 || black_threshold > 255) Fail("black threshold: expected 0..255, got ", black_threshold);
+    FailOption("CompressOptions.alpha_codebook", "must be in 1..65536, got ", alpha_codebook);
+  if (black_threshold < 0 || black_threshold > 255) FailOption("CompressOptions.black_threshold", "must be in 0..255, got ", black_threshold);
+  if (!(tolerance >= 0 && tolerance < 1)) FailOption("CompressOptions.tolerance", "must be in [0, 1), got ", tolerance);
+  if (max_iterations < 1) FailOption("CompressOptions.max_iterations", "must be at least 1, got ", max_iterations);
   MakeGlaOptions(*this, colour_codebook, seed).Check();
 }
 

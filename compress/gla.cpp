@@ -126,7 +126,7 @@ GlaResult RunLloyd(const TrainingSet& set, const GlaOptions& options, Codebook i
 CodewordRule ParseCodewordRule(const std::string& name) {
   if (name == "classic") return CodewordRule::kCentroid;
   if (name == "modified") return CodewordRule::kClosestMember;
-  Fail("--gla: expected 'classic' or 'modified', got '", name, "'");
+  Fail("unknown codeword rule '", name, "'; expected classic or modified");
 }
 
 std::string CodewordRuleName(CodewordRule rule) {
@@ -135,10 +135,10 @@ std::string CodewordRuleName(CodewordRule rule) {
 
 void GlaOptions::Check() const {
   if (codebook_size < 1 || codebook_size > 65536)
-    Fail("codebook size: expected 1..65536, got ", codebook_size);
-  if (!(tolerance >= 0 && tolerance < 1)) Fail("GLA tolerance: expected [0, 1), got ", tolerance);
-  if (max_iterations < 1) Fail("GLA iterations: expected >= 1, got ", max_iterations);
-  if (seeding_trials < 1 || seeding_trials > 64) Fail("k-means++ trials: expected 1..64, got ", seeding_trials);
+    FailOption("GlaOptions.codebook_size", "must be in 1..65536, got ", codebook_size);
+  if (!(tolerance >= 0 && tolerance < 1)) FailOption("GlaOptions.tolerance", "must be in [0, 1), got ", tolerance);
+  if (max_iterations < 1) FailOption("GlaOptions.max_iterations", "must be at least 1, got ", max_iterations);
+  if (seeding_trials < 1 || seeding_trials > 64) FailOption("GlaOptions.seeding_trials", "must be in 1..64, got ", seeding_trials);
 }
 
 void ClusterMean(const TrainingSet& set, const uint32_t* members, size_t count, float* mean) {

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace voltree {
 
@@ -25,6 +26,25 @@ std::string Str(const Args&... args) {
 template <typename... Args>
 [[noreturn]] void Fail(const Args&... args) {
   throw Error(Str(args...));
+}
+
+// A field of an options struct holds a value its Check() refuses. The message names the field as
+// "Struct.member" (e.g. "ReconstructOptions.levels must be at least 1, got 0"); the command line
+// replaces the field with the flag that set it.
+class OptionError : public Error {
+ public:
+  OptionError(std::string field, std::string problem)
+      : Error(field + " " + problem), field_(std::move(field)), problem_(std::move(problem)) {}
+  const std::string& field() const { return field_; }
+  const std::string& problem() const { return problem_; }  // the message after the field's name
+
+ private:
+  std::string field_, problem_;
+};
+
+template <typename... Args>
+[[noreturn]] void FailOption(std::string field, const Args&... args) {
+  throw OptionError(std::move(field), Str(args...));
 }
 
 // "FILE:LINE: message", the form compilers use, so editors can jump to it.

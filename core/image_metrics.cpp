@@ -121,7 +121,7 @@ void CheckRgbaPair(const Image8& render, const Image8& truth) {
 
 void ImageMetricsOptions::Check() const {
   if (!(background_grey >= 0 && background_grey <= 255))
-    Fail("image metrics option background_grey = ", background_grey, ", expected 0..255");
+    FailOption("ImageMetricsOptions.background_grey", "must be in 0..255, got ", background_grey);
   if (!(coverage_threshold >= 0 && coverage_threshold < 1))
     Fail("image metrics option coverage_threshold = ", coverage_threshold, ", expected 0 <= t < 1");
   if (ssim_window < 3 || ssim_window % 2 == 0)

@@ -5,8 +5,8 @@
 namespace voltree {
 
 void OrbitFramesOptions::Check() const {
-  if (frames < 1) Fail("orbit: frames = ", frames, ", expected >= 1");
-  if (size < 16 || size > 8192) Fail("orbit: size = ", size, ", expected 16..8192 pixels");
+  if (frames < 1) FailOption("OrbitFramesOptions.frames", "must be at least 1, got ", frames);
+  if (size < 16 || size > 8192) FailOption("OrbitFramesOptions.size", "must be in 16..8192 pixels, got ", size);
 }
 
 RenderJobResult RenderOrbitFrames(const std::filesystem::path& asset, const std::filesystem::path& folder,

@@ -317,13 +317,13 @@ JobResult FitOneView(const Volume& volume, int level, int v, const std::vector<V
 }  // namespace
 
 void BillboardFitOptions::Check() const {
-  if (iterations < 0) Fail("fit.iterations must be >= 0, got ", iterations);
-  if (!(prior >= 0 && std::isfinite(prior))) Fail("fit.prior must be >= 0, got ", prior);
-  if (!(alpha_weight > 0 && std::isfinite(alpha_weight))) Fail("fit.alpha_weight must be > 0, got ", alpha_weight);
-  if (!(billboard_scale > 0)) Fail("fit.billboard_scale must be > 0, got ", billboard_scale);
-  if (neighbours < 0) Fail("fit.neighbours must be >= 0, got ", neighbours);
+  if (iterations < 0) FailOption("BillboardFitOptions.iterations", "must be >= 0, got ", iterations);
+  if (!(prior >= 0 && std::isfinite(prior))) FailOption("BillboardFitOptions.prior", "must be >= 0, got ", prior);
+  if (!(alpha_weight > 0 && std::isfinite(alpha_weight))) FailOption("BillboardFitOptions.alpha_weight", "must be > 0, got ", alpha_weight);
+  if (!(billboard_scale > 0)) FailOption("BillboardFitOptions.billboard_scale", "must be > 0, got ", billboard_scale);
+  if (neighbours < 0) FailOption("BillboardFitOptions.neighbours", "must be >= 0, got ", neighbours);
   if (!(neighbour_weight >= 0 && std::isfinite(neighbour_weight)))
-    Fail("fit.neighbour_weight must be >= 0, got ", neighbour_weight);
+    FailOption("BillboardFitOptions.neighbour_weight", "must be >= 0, got ", neighbour_weight);
 }
 
 BillboardFitReport FitBillboards(const std::vector<View>& views, const std::vector<Image8>& mattes,

@@ -58,7 +58,7 @@ bool MakeBillboard(const LevelInput& in, size_t cell, const View& view, const Vo
       const PixelBox box = CoveredPixels(pixel.x() - half, pixel.y() - half, pixel.x() + half, pixel.y() + half);
       const double alpha = matte.MeanAlpha(box);
       if (alpha <= 0) continue;  // outside the image or transparent there
-      const double b = -std::log(std::max(1.0 - alpha, options.epsilon));
+      const double b = OpticalDepth(alpha, options.epsilon);
       double total = 0, front = 0, own = 0;
       bool reached = false;
       const Ray ray{frame_view.position, (p - frame_view.position).normalized()};
@@ -139,6 +139,12 @@ void MakeBillboards(const std::vector<View>& views, const std::vector<MatteStats
     }
     std::vector<uint8_t>().swap(texels[l]);
   }
+}
+
+void BillboardOptions::Check() const {
+  if (!(prune > 0 && prune <= 1)) FailOption("BillboardOptions.prune", "must be in (0, 1], got ", prune);
+  if (!(scale > 0)) FailOption("BillboardOptions.scale", "must be positive, got ", scale);
+  if (!(epsilon > 0 && epsilon < 1)) FailOption("BillboardOptions.epsilon", "must be in (0, 1), got ", epsilon);
 }
 
 }  // namespace voltree

@@ -21,6 +21,7 @@
 #include "core/image.h"
 #include "core/progress.h"
 #include "reconstruct/matte_stats.h"
+#include "reconstruct/optical_depth.h"
 #include "reconstruct/volume.h"
 
 namespace voltree {
@@ -28,7 +29,9 @@ namespace voltree {
 struct BillboardOptions {
   double prune = 0.95;   // accumulated alpha in front above which a texel is hidden
   double scale = 1.0;    // billboard side / cell edge
-  double epsilon = 1e-3; // b = -ln(max(1 - alpha, epsilon)), as in the tomography
+  double epsilon = kDefaultAlphaEpsilon;  // of the optical depth; must be the tomography's (optical_depth.h)
+
+  void Check() const;  // throws OptionError naming the field
 };
 
 // The view's billboard frame, tree frame: camera centre, unit +Z, unit image "up" (-Y).

@@ -82,4 +82,10 @@ SolveReport SolveCeres(const TomographySystem& system, const CeresSolveOptions& 
   return report;
 }
 
+void CeresSolveOptions::Check() const {
+  if (iterations < 1) FailOption("CeresSolveOptions.iterations", "must be at least 1, got ", iterations);
+  if (!(huber >= 0)) FailOption("CeresSolveOptions.huber", "must be >= 0, got ", huber);
+  if (threads < 1) FailOption("CeresSolveOptions.threads", "must be at least 1, got ", threads);
+}
+
 }  // namespace voltree

@@ -15,6 +15,8 @@ struct CeresSolveOptions {
   double huber = 0;  // > 0: Huber loss with this scale on the weighted residual
   int threads = 1;
   size_t max_cells = 200000;  // larger problems are refused: use SART
+
+  void Check() const;  // throws OptionError naming the field
 };
 
 SolveReport SolveCeres(const TomographySystem& system, const CeresSolveOptions& options, std::vector<double>* x);

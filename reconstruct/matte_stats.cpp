@@ -8,6 +8,10 @@
 
 namespace voltree {
 
+uint8_t CarveThreshold8(double carve_alpha) {
+  return uint8_t(std::clamp(std::floor(carve_alpha * 255.0), 0.0, 254.0));
+}
+
 PixelBox CoveredPixels(double min_x, double min_y, double max_x, double max_y) {
   PixelBox box;
   const double cx = 0.5 * (min_x + max_x), cy = 0.5 * (min_y + max_y);

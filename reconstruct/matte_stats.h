@@ -21,6 +21,9 @@ struct PixelBox {
 // covers [x, x+1) x [y, y+1)); at least the pixel containing the centre.
 PixelBox CoveredPixels(double min_x, double min_y, double max_x, double max_y);
 
+// The 8-bit alpha at or below which a pixel is empty for carving, from carve_alpha in [0, 1).
+uint8_t CarveThreshold8(double carve_alpha);
+
 class MatteStats {
  public:
   MatteStats() = default;

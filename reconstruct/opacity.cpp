@@ -39,13 +39,13 @@ std::vector<OpacityLevel> BuildHierarchyFromFinest(const OpacityLevel& finest, i
 }
 
 OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& views,
-                              const std::vector<MatteStats>& mattes, const OpacityOptions& options,
+                              const std::vector<MatteStats>& mattes, int levels, const OpacityOptions& options,
                               Progress* progress) {
   OpacityResult result;
   std::vector<CellCoord> candidates = {CellCoord{0, 0, 0}};
   std::vector<double> initial = {0.0};
   int finest = -1;
-  for (int level = 0; level < options.levels && !candidates.empty(); ++level) {
+  for (int level = 0; level < levels && !candidates.empty(); ++level) {
     OpacityLevelReport report;
     report.candidates = candidates.size();
     std::vector<CellCoord> kept = CarveCells(frame, level, candidates, views, mattes);
@@ -82,7 +82,7 @@ OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& v
     // Refine the dense cells; their children start from the parent's sigma.
     candidates.clear();
     initial.clear();
-    if (level + 1 < options.levels) {
+    if (level + 1 < levels) {
       const double cell = frame.CellSize(level);
       std::vector<CellCoord> dense;
       std::vector<double> dense_sigma;
@@ -104,8 +104,18 @@ OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& v
     result.solved.push_back(std::move(solved));
   }
   result.levels = BuildHierarchyFromFinest(result.solved[finest], finest, frame.branching);
-  result.levels.resize(options.levels);  // levels never reached stay empty
+  result.levels.resize(levels);  // levels never reached stay empty
   return result;
+}
+
+void OpacityOptions::Check() const {
+  if (solver != SolverKind::kSart && solver != SolverKind::kCeres)
+    FailOption("OpacityOptions.solver", "is not a known solver (", int(solver), ")");
+  if (!(refine_min_optical_depth >= 0))
+    FailOption("OpacityOptions.refine_min_optical_depth", "must be >= 0, got ", refine_min_optical_depth);
+  tomography.Check();
+  sart.Check();
+  ceres.Check();
 }
 
 }  // namespace voltree

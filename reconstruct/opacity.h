@@ -21,7 +21,6 @@ namespace voltree {
 enum class SolverKind { kSart, kCeres };
 
 struct OpacityOptions {
-  int levels = 7;
   SolverKind solver = SolverKind::kSart;
   TomographyOptions tomography;
   SartOptions sart;
@@ -29,6 +28,8 @@ struct OpacityOptions {
   // A cell is refined when sigma * cell edge (its optical depth) reaches this; below it the cell
   // is practically transparent (alpha < 0.2 %).
   double refine_min_optical_depth = 0;  // 0: refine every cell the visual hull keeps
+
+  void Check() const;  // throws OptionError naming the field
 };
 
 struct OpacityLevel {
@@ -48,8 +49,9 @@ struct OpacityResult {
   std::vector<OpacityLevelReport> reports;
 };
 
+// Levels 0 .. levels-1 of the hierarchy, coarse to fine.
 OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& views,
-                              const std::vector<MatteStats>& mattes, const OpacityOptions& options,
+                              const std::vector<MatteStats>& mattes, int levels, const OpacityOptions& options,
                               Progress* progress);
 
 // Levels 0 .. finest-1 rebuilt from `finest` (cells at level `finest_level`): parent sigma = sum of

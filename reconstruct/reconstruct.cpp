@@ -27,8 +27,6 @@ std::string Gigabytes(size_t bytes) {
   return out.str();
 }
 
-uint8_t CarveThreshold8(double carve_alpha) { return uint8_t(std::clamp(std::floor(carve_alpha * 255.0), 0.0, 254.0)); }
-
 // White leaves where no foreground colour is given: colour is then only a placeholder.
 Image8 WhiteForeground(const Image8& matte) {
   Image8 out(matte.width, matte.height, 4);
@@ -50,42 +48,39 @@ void SayFitReport(const BillboardFitReport& report, Progress& progress) {
 }  // namespace
 
 void ReconstructOptions::Check() const {
-  if (branching != 2 && branching != 3) Fail("--branching must be 2 (octree) or 3 (tri-grid), got ", branching);
-  if (levels < 1) Fail("--levels must be at least 1, got ", levels);
+  if (branching != 2 && branching != 3)
+    FailOption("ReconstructOptions.branching", "must be 2 (octree) or 3 (tri-grid), got ", branching);
+  if (levels < 1) FailOption("ReconstructOptions.levels", "must be at least 1, got ", levels);
   if (LevelResolution(branching, levels - 1) == 0)
-    Fail("--levels ", levels, " at branching ", branching, " exceeds the 16-bit cell coordinates (at most ",
-         branching == 2 ? 16 : 10, " levels)");
-  if (texels < 1 || texels > 64) Fail("--texels must be in [1, 64], got ", texels);
-  if (!(prune > 0 && prune <= 1)) Fail("--prune must be in (0, 1], got ", prune);
-  if (iterations < 1) Fail("--iterations must be at least 1, got ", iterations);
-  if (!(relaxation > 0 && relaxation < 2)) Fail("SART relaxation must be in (0, 2), got ", relaxation);
-  if (!(huber >= 0)) Fail("Huber scale must be >= 0, got ", huber);
-  if (threads < 0) Fail("--threads must be >= 0, got ", threads);
-  if (!(margin >= 0 && margin < 1)) Fail("margin must be in [0, 1), got ", margin);
-  if (!(carve_alpha >= 0 && carve_alpha < 1)) Fail("carve alpha must be in [0, 1), got ", carve_alpha);
-  if (!(refine_min_optical_depth >= 0)) Fail("refinement threshold must be >= 0");
-  if (!(samples_per_cell > 0)) Fail("samples per cell must be positive");
-  if (!(epsilon > 0 && epsilon < 1)) Fail("epsilon must be in (0, 1)");
-  if (!(billboard_scale > 0)) Fail("billboard scale must be positive");
+    FailOption("ReconstructOptions.levels", levels, " at branching ", branching,
+               " exceeds the 16-bit cell coordinates (at most ", branching == 2 ? 16 : 10, " levels)");
+  if (texels < 1 || texels > 64) FailOption("ReconstructOptions.texels", "must be in [1, 64], got ", texels);
+  if (threads < 0) FailOption("ReconstructOptions.threads", "must be >= 0, got ", threads);
+  if (!(margin >= 0 && margin < 1)) FailOption("ReconstructOptions.margin", "must be in [0, 1), got ", margin);
+  if (!(carve_alpha >= 0 && carve_alpha < 1))
+    FailOption("ReconstructOptions.carve_alpha", "must be in [0, 1), got ", carve_alpha);
+  opacity.Check();
+  billboards.Check();
   fit.Check();
 }
 
 nlohmann::json ReconstructOptions::ToJson() const {
   // Threads are left out on purpose: the output does not depend on them.
+  const bool ceres = opacity.solver == SolverKind::kCeres;
   return {{"levels", levels},
           {"branching", branching},
           {"texels", texels},
-          {"prune", prune},
-          {"solver", solver == SolverKind::kCeres ? "ceres" : "sart"},
-          {"iterations", iterations},
-          {"relaxation", relaxation},
-          {"huber", huber},
+          {"prune", billboards.prune},
+          {"solver", ceres ? "ceres" : "sart"},
+          {"iterations", ceres ? opacity.ceres.iterations : opacity.sart.iterations},
+          {"relaxation", opacity.sart.relaxation},
+          {"huber", opacity.ceres.huber},
           {"margin", margin},
           {"carve_alpha", carve_alpha},
-          {"refine_min_optical_depth", refine_min_optical_depth},
-          {"samples_per_cell", samples_per_cell},
-          {"epsilon", epsilon},
-          {"billboard_scale", billboard_scale},
+          {"refine_min_optical_depth", opacity.refine_min_optical_depth},
+          {"samples_per_cell", opacity.tomography.samples_per_cell},
+          {"epsilon", opacity.tomography.epsilon},
+          {"billboard_scale", billboards.scale},
           {"fit", fit.enabled ? nlohmann::json{{"iterations", fit.iterations},
                                                {"prior", fit.prior},
                                                {"alpha_weight", fit.alpha_weight},
@@ -125,7 +120,7 @@ size_t EstimateReconstructBytes(const ReconstructInput& input, const Reconstruct
   const double cells = 0.25 * finest * (1.0 + 1.0 / (std::pow(options.branching, 3) - 1));
   bytes += cells * (sizeof(CellCoord) + sizeof(float) + 18 * sizeof(double));
   bytes += cells * double(input.views.size()) * (double(options.texels) * options.texels * 4 + 1);
-  bytes += double(options.max_stored_bytes);
+  bytes += double(options.opacity.tomography.max_stored_bytes);
   return size_t(std::min(bytes, 1e19));
 }
 
@@ -220,20 +215,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
     });
     const GridFrame frame = RootCube(input.bounds_min, input.bounds_max, options.margin, options.branching);
 
-    OpacityOptions opacity;
-    opacity.levels = options.levels;
-    opacity.solver = options.solver;
-    opacity.tomography.epsilon = options.epsilon;
-    opacity.tomography.samples_per_cell = options.samples_per_cell;
-    opacity.tomography.max_stored_bytes = options.max_stored_bytes;
-    opacity.sart.iterations = options.iterations;
-    opacity.sart.relaxation = options.relaxation;
-    opacity.ceres.iterations = options.iterations;
-    opacity.ceres.huber = options.huber;
-    opacity.ceres.threads = 1;  // deterministic
-    opacity.refine_min_optical_depth = options.refine_min_optical_depth;
     const auto solve_start = Clock::now();
-    const OpacityResult solved = EstimateOpacity(frame, input.views, mattes, opacity, progress);
+    const OpacityResult solved = EstimateOpacity(frame, input.views, mattes, options.levels, options.opacity, progress);
     const auto billboard_start = Clock::now();
     if (stats) {
       stats->solve_seconds = std::chrono::duration<double>(billboard_start - solve_start).count();
@@ -254,10 +237,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
     std::vector<Image8> white;
     if (input.foreground.empty())
       for (const Image8& m : input.mattes) white.push_back(WhiteForeground(m));
-    BillboardOptions billboards;
-    billboards.prune = options.prune;
-    billboards.scale = options.billboard_scale;
-    billboards.epsilon = options.epsilon;
+    BillboardOptions billboards = options.billboards;
+    billboards.epsilon = options.opacity.tomography.epsilon;  // one optical depth for both (optical_depth.h)
     const std::vector<Image8>& foreground = input.foreground.empty() ? white : input.foreground;
     MakeBillboards(input.views, mattes, foreground, billboards, &volume, progress);
     if (stats) {
@@ -267,7 +248,7 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
     }
     if (options.fit.enabled) {
       BillboardFitOptions fit = options.fit;
-      fit.billboard_scale = options.billboard_scale;
+      fit.billboard_scale = options.billboards.scale;
       const BillboardFitReport report = FitBillboards(input.views, input.mattes, foreground, fit, &volume, progress);
       if (progress) SayFitReport(report, *progress);
       if (stats) stats->fit = report;

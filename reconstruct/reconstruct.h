@@ -24,24 +24,15 @@ struct ReconstructOptions {
   bool auto_levels = false;   // levels from the photos instead (auto_levels.h): a finest texel ~ one pixel
   int branching = 2;          // 2: octree, 3: tri-grid (Reche 2004)
   int texels = 4;             // billboards are texels x texels (8 for Reche 2004)
-  double prune = 0.95;        // accumulated alpha in front above which a texel is hidden
-  SolverKind solver = SolverKind::kSart;
-  int iterations = 30;        // solver iterations per level
-  double relaxation = 1.0;    // SART lambda in (0, 2)
-  double huber = 0;           // Ceres only: Huber loss scale (0 = plain least squares)
-  int threads = 0;            // 0: all cores
   double margin = 0.05;       // root cube = bounds' cube grown by this fraction of its edge per side
   double carve_alpha = 0.02;  // pixels at or below this alpha are empty for carving
-  double refine_min_optical_depth = 0;  // 0: refine every cell the visual hull keeps
-  double samples_per_cell = 2;
-  double epsilon = 1e-3;
-  double billboard_scale = 1.0;
-  BillboardFitOptions fit;    // billboards fitted to the photos after the tomography (fit.billboard_scale is
-                              // ignored: billboard_scale above is used)
-  size_t max_stored_bytes = size_t(1) << 30;  // larger ray systems are streamed
-  size_t memory_limit_bytes = 0;              // 0: the memory available now (/proc/meminfo)
+  int threads = 0;            // 0: all cores
+  size_t memory_limit_bytes = 0;  // 0: the memory available now (/proc/meminfo)
+  OpacityOptions opacity;         // the tomography: solver, ray sampling, refinement
+  BillboardOptions billboards;    // texel colours and pruning; their epsilon is the tomography's
+  BillboardFitOptions fit;        // billboards fitted to the photos; their scale is billboards.scale
 
-  void Check() const;
+  void Check() const;  // throws OptionError naming the field
   nlohmann::json ToJson() const;
 };
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
+
 namespace voltree {
 
 double RmsResidual(const TomographySystem& system, const std::vector<double>& x) {
@@ -64,6 +66,11 @@ SolveReport SolveSart(const TomographySystem& system, const SartOptions& options
   }
   report.rms_residual = RmsResidual(system, *x);
   return report;
+}
+
+void SartOptions::Check() const {
+  if (iterations < 1) FailOption("SartOptions.iterations", "must be at least 1, got ", iterations);
+  if (!(relaxation > 0 && relaxation < 2)) FailOption("SartOptions.relaxation", "must be in (0, 2), got ", relaxation);
 }
 
 }  // namespace voltree

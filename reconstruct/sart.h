@@ -13,6 +13,8 @@ namespace voltree {
 struct SartOptions {
   int iterations = 30;
   double relaxation = 1.0;  // lambda in (0, 2)
+
+  void Check() const;  // throws OptionError naming the field
 };
 
 struct SolveReport {

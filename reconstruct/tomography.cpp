@@ -6,6 +6,8 @@
 #include <atomic>
 #include <cmath>
 
+#include "core/error.h"
+
 namespace voltree {
 
 std::vector<std::pair<size_t, size_t>> ViewChunks(size_t views) {
@@ -37,7 +39,7 @@ ViewRays SampleRays(const View& view, const MatteStats& matte, int block, double
       const double alpha = matte.MeanAlpha(box);
       const Eigen::Vector2d centre(0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1));
       rays.directions.push_back(view.PixelRay(centre));
-      rays.b.push_back(float(-std::log(std::max(1.0 - alpha, epsilon))));
+      rays.b.push_back(float(OpticalDepth(alpha, epsilon)));
     }
   return rays;
 }
@@ -121,6 +123,11 @@ void TomographySystem::Walk(const Ray& ray, std::vector<uint32_t>* cells, std::v
                  }
                  return true;
                });
+}
+
+void TomographyOptions::Check() const {
+  if (!(epsilon > 0 && epsilon < 1)) FailOption("TomographyOptions.epsilon", "must be in (0, 1), got ", epsilon);
+  if (!(samples_per_cell > 0)) FailOption("TomographyOptions.samples_per_cell", "must be positive, got ", samples_per_cell);
 }
 
 }  // namespace voltree

@@ -12,13 +12,16 @@
 #include "reconstruct/dda.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
+#include "reconstruct/optical_depth.h"
 
 namespace voltree {
 
 struct TomographyOptions {
-  double epsilon = 1e-3;           // b = -ln(max(1 - alpha, epsilon)): caps optical depth at ~6.9
+  double epsilon = kDefaultAlphaEpsilon;  // of the optical depth (optical_depth.h)
   double samples_per_cell = 2;     // rays per projected cell edge
-  size_t max_stored_bytes = size_t(1) << 30;
+  size_t max_stored_bytes = size_t(1) << 30;  // larger ray systems are streamed
+
+  void Check() const;  // throws OptionError naming the field
 };
 
 // One view's sampled rays at a level.

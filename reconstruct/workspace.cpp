@@ -53,7 +53,7 @@ std::optional<SceneBounds> ReadSceneBounds(const fs::path& scene_json) {
 SceneBounds VisualHullBounds(const std::vector<View>& views, const std::vector<Image8>& mattes,
                              const SceneBounds& initial, double carve_alpha) {
   std::vector<MatteStats> stats;
-  for (const Image8& m : mattes) stats.emplace_back(m, uint8_t(std::clamp(carve_alpha * 255.0, 0.0, 254.0)));
+  for (const Image8& m : mattes) stats.emplace_back(m, CarveThreshold8(carve_alpha));
   const GridFrame frame = RootCube(initial.min, initial.max, 0.0, 2);
   constexpr int kLevel = 5;
   const int res = frame.Resolution(kLevel);

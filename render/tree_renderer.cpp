@@ -135,8 +135,8 @@ void SetVec3Array(const ShaderProgram& program, const char* name, const Eigen::V
 void TreeRenderOptions::Check() const {
   lod.Check();
   for (float c : background)
-    if (!(c >= 0 && c <= 1)) Fail("render: background components must be in [0, 1]");
-  if (!(billboard_scale > 0)) Fail("render: billboard scale must be > 0, got ", billboard_scale);
+    if (!(c >= 0 && c <= 1)) FailOption("TreeRenderOptions.background", "components must be in [0, 1]");
+  if (!(billboard_scale > 0)) FailOption("TreeRenderOptions.billboard_scale", "must be > 0, got ", billboard_scale);
 }
 
 TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texels_(asset.texels), index_(asset) {

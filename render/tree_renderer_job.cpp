@@ -20,29 +20,12 @@ namespace voltree {
 
 void RenderJobOptions::Check() const {
   render.Check();
-  if ((orbit > 0) == !cameras.empty()) Fail("render: give exactly one of --orbit N and --cameras MODEL_DIR");
-  if (orbit < 0) Fail("render: --orbit must be >= 1, got ", orbit);
-  if (width < 0 || height < 0 || (width == 0) != (height == 0)) Fail("render: bad --size ", width, "x", height);
+  if ((orbit > 0) == !cameras.empty()) FailOption("RenderJobOptions.orbit", "N and --cameras MODEL_DIR: give exactly one of them");
+  if (orbit < 0) FailOption("RenderJobOptions.orbit", "must be >= 1, got ", orbit);
+  if (width < 0 || height < 0 || (width == 0) != (height == 0)) FailOption("RenderJobOptions.width", "must be positive in width and height, got ", width, "x", height);
   if (output.empty() && turntable.empty()) Fail("render: an output folder (-o DIR) or --turntable FILE.mp4 is required");
-  if (!turntable.empty() && orbit == 0) Fail("render: --turntable encodes orbit frames; it cannot be used with --cameras");
-  if (!asset_folder.empty() && !IsSceneFile(asset)) Fail("render: --assets applies to a scene (.json), not to ", asset.string());
-}
-
-std::array<int, 2> ParseSize(const std::string& text, const std::string& what) {
-  int w = 0, h = 0;
-  char x = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1)
-    Fail(what, ": expected WIDTHxHEIGHT such as 512x512, got '", text, "'");
-  return {w, h};
-}
-
-std::array<float, 4> ParseBackground(const std::string& text) {
-  int r = 0, g = 0, b = 0;
-  char rest = 0;
-  if (std::sscanf(text.c_str(), "%d,%d,%d%c", &r, &g, &b, &rest) != 3 || std::min({r, g, b}) < 0 ||
-      std::max({r, g, b}) > 255)
-    Fail("--background: expected R,G,B with components 0..255 such as 135,180,230, got '", text, "'");
-  return {r / 255.0f, g / 255.0f, b / 255.0f, 1.0f};
+  if (!turntable.empty() && orbit == 0) FailOption("RenderJobOptions.turntable", "encodes orbit frames; it cannot be used with --cameras");
+  if (!asset_folder.empty() && !IsSceneFile(asset)) FailOption("RenderJobOptions.asset_folder", "applies to a scene (.json), not to ", asset.string());
 }
 
 Camera ResizeCamera(const Camera& camera, int width, int height) {

@@ -38,10 +38,6 @@ struct RenderJobResult {
   std::string renderer;                    // GL_RENDERER
 };
 
-// "640x480" -> {640, 480}; throws Error naming `what` otherwise.
-std::array<int, 2> ParseSize(const std::string& text, const std::string& what);
-// "R,G,B" with components 0..255 -> opaque straight RGBA in [0, 1].
-std::array<float, 4> ParseBackground(const std::string& text);
 // A camera's intrinsics scaled to a new image size (focal lengths and principal point).
 Camera ResizeCamera(const Camera& camera, int width, int height);
 

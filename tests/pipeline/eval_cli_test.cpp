@@ -107,7 +107,7 @@ TEST_F(EvalCli, WritesMetricsAndAReportWithItsImages) {
   EXPECT_TRUE(fs::exists(dir_ / "report" / "orbit" / "frame_003.png"));  // render's frames are kept
 
   // Running again replaces eval's own report without --force.
-  EXPECT_EQ(Voltree("eval " + d + " --quiet --levels auto --no-input > /dev/null"), 0);
+  EXPECT_EQ(Voltree("eval " + d + " --quiet --eval-levels auto --no-input > /dev/null"), 0);
   const nlohmann::json again = nlohmann::json::parse(ReadFile(dir_ / "report" / "metrics.json"));
   EXPECT_EQ(again.at("levels").size(), 1u);
   EXPECT_FALSE(again.at("overall").contains("input"));
@@ -118,7 +118,7 @@ TEST_F(EvalCli, WritesMetricsAndAReportWithItsImages) {
 // which the LOD picks everywhere at this size), and each compression step costs, never gains.
 TEST_F(EvalCli, BudgetMeasuresEveryStepAndAgreesWithTheRenderer) {
   const fs::path report = dir_ / "budget_report";
-  ASSERT_EQ(Voltree("eval " + dir_.string() + " --budget --levels auto --no-images --no-plots --quiet --report " +
+  ASSERT_EQ(Voltree("eval " + dir_.string() + " --budget --eval-levels auto --no-images --no-plots --quiet --report " +
                     report.string() + " > " + (dir_ / "budget_stdout.txt").string()),
             0);
   EXPECT_NE(ReadFile(dir_ / "budget_stdout.txt").find("error budget"), std::string::npos);
@@ -149,7 +149,7 @@ TEST_F(EvalCli, BudgetMeasuresEveryStepAndAgreesWithTheRenderer) {
 TEST_F(EvalCli, AFailedRunLeavesNoEmptyReport) {
   fs::rename(dir_ / "truth" / "rgba" / "held_001.png", dir_ / "held_001.png.aside");
   const fs::path report = dir_ / "failed_report";
-  const int status = Voltree("eval " + dir_.string() + " --levels auto --no-plots --quiet --report " +
+  const int status = Voltree("eval " + dir_.string() + " --eval-levels auto --no-plots --quiet --report " +
                              report.string() + " > /dev/null 2>&1");
   fs::rename(dir_ / "held_001.png.aside", dir_ / "truth" / "rgba" / "held_001.png");
   EXPECT_NE(status, 0);
@@ -160,7 +160,7 @@ TEST_F(EvalCli, RefusesToReplaceAReportItDidNotWrite) {
   const fs::path report = dir_ / "user_report";
   fs::create_directories(report);
   WriteFileAtomic(report / "index.html", "<html>the user's own page</html>\n");
-  const std::string command = "eval " + dir_.string() + " --levels auto --no-input --no-plots --quiet --report " +
+  const std::string command = "eval " + dir_.string() + " --eval-levels auto --no-input --no-plots --quiet --report " +
                               report.string();
   EXPECT_NE(Voltree(command + " > /dev/null 2>&1"), 0);
   EXPECT_EQ(ReadFile(report / "index.html"), "<html>the user's own page</html>\n");
@@ -173,7 +173,7 @@ TEST_F(EvalCli, HelpTeachesEveryOption) {
   const std::string help = dir_.string() + "/eval_help.txt";
   ASSERT_EQ(Voltree("eval --help > " + help), 0);
   const std::string text = ReadFile(help);
-  for (const char* option : {"--asset", "--report", "--grey", "--levels", "--no-input", "--no-images", "--no-plots",
+  for (const char* option : {"--asset", "--report", "--grey", "--eval-levels", "--no-input", "--no-images", "--no-plots",
                              "--codebook-sweep", "--scene-bench", "--budget", "--force", "--quiet"})
     EXPECT_NE(text.find(option), std::string::npos) << option;
   EXPECT_NE(text.find("DIR/tree.vtree"), std::string::npos);

@@ -15,7 +15,7 @@ Volume PhantomVolume(double prune, bool dense = false) {
   static const ReconstructInput dense_input = testing::PhantomInput(testing::BlobPhantom(16, 6.0), 16, 64);
   ReconstructOptions options;
   options.levels = 5;
-  options.prune = prune;
+  options.billboards.prune = prune;
   options.threads = 2;
   Progress quiet(true);
   return Reconstruct(dense ? dense_input : input, options, &quiet);

@@ -31,7 +31,7 @@ TEST(PhantomTomography, RecoversBlobDensities) {
   ReconstructOptions options;
   options.levels = 5;  // level 4: 16^3, the phantom's grid
   options.margin = 0;  // root cube = [0,1]^3
-  options.iterations = 40;
+  options.opacity.sart.iterations = 40;
   options.threads = 2;
   Progress progress(true);
   const Volume volume = Reconstruct(input, options, &progress);

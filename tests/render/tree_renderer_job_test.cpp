@@ -25,18 +25,6 @@ struct TempDir {
   ~TempDir() { fs::remove_all(path); }
 };
 
-TEST(RenderJob, ParsesSizesAndBackgrounds) {
-  EXPECT_EQ(ParseSize("640x480", "--size"), (std::array<int, 2>{640, 480}));
-  EXPECT_THROW(ParseSize("640", "--size"), Error);
-  EXPECT_THROW(ParseSize("0x4", "--size"), Error);
-  EXPECT_THROW(ParseSize("64x48x2", "--size"), Error);
-  const auto bg = ParseBackground("255,0,51");
-  EXPECT_FLOAT_EQ(bg[0], 1.0f);
-  EXPECT_FLOAT_EQ(bg[2], 0.2f);
-  EXPECT_FLOAT_EQ(bg[3], 1.0f);
-  EXPECT_THROW(ParseBackground("300,0,0"), Error);
-}
-
 TEST(RenderJob, ResizesCameras) {
   const Camera camera = Camera::Pinhole(200, 100, 150, 160, 100, 50);
   const Camera half = ResizeCamera(camera, 100, 50);

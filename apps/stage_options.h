@@ -1,0 +1,33 @@
+// The flags of each stage's options, bound to the struct a command passes: a command that runs a
+// stage adds that stage's flags with one call, so `reconstruct`, `run` and `demo` accept the same
+// reconstruction flags with the same meanings and defaults (help and names: option_registry.cpp).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "capture/calibrate.h"
+#include "capture/matte_workspace.h"
+#include "compress/compress_volume.h"
+#include "pipeline/evaluate.h"
+#include "pipeline/orbit_frames.h"
+#include "reconstruct/reconstruct.h"
+#include "render/tree_renderer.h"
+#include "samples/studio_options.h"
+#include "samples/tree_source.h"
+
+namespace voltree::app {
+
+void AddTreeSourceOptions(CLI::App& command, TreeSource& tree, StudioOptions& studio);  // --seed sets both
+void AddStudioOptions(CLI::App& command, StudioOptions& studio);
+void AddCalibrateOptions(CLI::App& command, CalibrateOptions& calibrate);
+void AddMatteOptions(CLI::App& command, MatteOptions& matte);
+void AddReconstructOptions(CLI::App& command, ReconstructOptions& reconstruct);
+void AddCompressOptions(CLI::App& command, CompressOptions& compress);
+void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit);
+void AddEvaluateOptions(CLI::App& command, EvaluateOptions& evaluate);
+void AddRenderOptions(CLI::App& command, TreeRenderOptions& render);
+
+// --threads for every stage a command runs: one flag, one count.
+void AddThreadsOption(CLI::App& command, int& threads);
+
+}  // namespace voltree::app
