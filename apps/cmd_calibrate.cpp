@@ -30,7 +30,7 @@ void AddCalibrateCommand(CLI::App& app) {
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     Progress progress(args->quiet);
-    const CalibrateReport report = Calibrate(args->dir, args->options, progress);
+    const CalibrateReport report = CalibrateWorkspace(args->dir, args->options, progress);
     std::printf("registered %d/%d photos, mean reprojection error %.3f px, bounds (%s, %s) from the %s\n",
                 report.registered, report.images, report.mean_reprojection_error,
                 Str(report.bounds_min.transpose()).c_str(), Str(report.bounds_max.transpose()).c_str(),

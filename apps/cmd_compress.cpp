@@ -31,23 +31,21 @@ void AddCompressCommand(CLI::App& app) {
       "Linz 2006), pack the codebooks into a DXT5 atlas and write the asset DIR/tree.vtree");
   struct Arguments {
     std::string dir;
-    CompressOptions options;
-    CompressWorkspaceOptions workspace;
+    CompressWorkspaceOptions options;
     bool quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   command->add_option("DIR", args->dir, "Capture workspace with a reconstruction in DIR/volume/")->required();
-  AddOption(*command, "--output", args->workspace.output, "Output asset (default DIR/tree.vtree)");
-  AddCompressOptions(*command, args->options);
-  AddFlag(*command, "--zstd", args->workspace.zstd);
-  AddFlag(*command, "--force", args->workspace.force, "Overwrite an existing output file");
+  AddOption(*command, "--output", args->options.output, "Output asset (default DIR/tree.vtree)");
+  AddCompressOptions(*command, args->options.compress);
+  AddFlag(*command, "--zstd", args->options.zstd);
+  AddFlag(*command, "--force", args->options.force, "Overwrite an existing output file");
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     Progress progress(args->quiet);
-    CompressStats stats;
-    CompressWorkspace(args->dir, args->options, args->workspace, &progress, &stats);
-    WarnIfCodebookSmaller("--codebook", args->options.colour_codebook, stats.colour.codebook.size());
-    WarnIfCodebookSmaller("--alpha-codebook", args->options.alpha_codebook, stats.alpha.codebook.size());
+    const CompressStats stats = CompressWorkspace(args->dir, args->options, progress).stats;
+    WarnIfCodebookSmaller("--codebook", args->options.compress.colour_codebook, stats.colour.codebook.size());
+    WarnIfCodebookSmaller("--alpha-codebook", args->options.compress.alpha_codebook, stats.alpha.codebook.size());
   });
 }
 

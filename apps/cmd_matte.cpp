@@ -5,8 +5,7 @@
 #include "apps/commands.h"
 #include "apps/option_registry.h"
 #include "apps/stage_options.h"
-#include "capture/matte_hull_refine.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte.h"
 #include "core/progress.h"
 
 namespace voltree::app {

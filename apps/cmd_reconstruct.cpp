@@ -6,7 +6,7 @@
 #include "apps/option_registry.h"
 #include "apps/stage_options.h"
 #include "core/progress.h"
-#include "reconstruct/workspace.h"
+#include "reconstruct/reconstruct_workspace.h"
 
 namespace voltree::app {
 
@@ -18,19 +18,18 @@ void AddReconstructCommand(CLI::App& app) {
       "fit them to the photos, prune hidden ones, and write DIR/volume/ (volume.json + volume.bin)");
   struct Arguments {
     std::string dir;
-    ReconstructOptions options;
-    bool force = false;
+    ReconstructWorkspaceOptions options;
     bool quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   command->add_option("DIR", args->dir, "Capture workspace (sparse/, mattes/, foreground/, scene.json)")->required();
-  AddReconstructOptions(*command, args->options);
-  AddThreadsOption(*command, args->options.threads);
-  AddFlag(*command, "--force", args->force, "Replace an existing DIR/volume");
+  AddReconstructOptions(*command, args->options.reconstruct);
+  AddThreadsOption(*command, args->options.reconstruct.threads);
+  AddFlag(*command, "--force", args->options.force, "Replace an existing DIR/volume");
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     Progress progress(args->quiet);
-    ReconstructWorkspace(args->dir, args->options, args->force, &progress);
+    ReconstructWorkspace(args->dir, args->options, progress);
   });
 }
 

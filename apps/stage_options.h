@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "capture/calibrate.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte.h"
 #include "compress/compress_volume.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"

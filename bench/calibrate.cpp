@@ -80,7 +80,7 @@ void RunTree(const std::string& tree, const BenchOptions& bench) {
   std::printf("| %-9s | %4d | %2d |", tree.c_str(), bench.size, bench.views);
   std::fflush(stdout);
   try {
-    const CalibrateReport report = Calibrate(dir, options, quiet);
+    const CalibrateReport report = CalibrateWorkspace(dir, options, quiet);
     const CameraAccuracy accuracy = CompareCameras(ReadColmapText(dir / "sparse").Views(), truth.Views());
     // The normalized frame against the true one: heading is free, up, origin and scale are not.
     const Similarity& align = accuracy.estimated_to_true;

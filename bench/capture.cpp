@@ -16,8 +16,7 @@
 
 #include "capture/calibrate_accuracy.h"
 #include "capture/colmap_binary.h"
-#include "capture/matte_metrics.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
 #include "core/image.h"

@@ -22,7 +22,7 @@
 #include "compress/synthetic_volume.h"
 #include "compress/texture_psnr.h"
 #include "core/error.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 
 using namespace voltree;
 

@@ -1,7 +1,7 @@
 // Matting accuracy and speed: for each workspace with true mattes (a `voltree synth` set: photos
 // in images/, true mattes in mattes/, truth/meta.json naming the tree) and each refine method,
 // mattes every photo and prints seconds per image, SAD (thousands) and MSE (x1e3), averaged over
-// the photos (see capture/matte_metrics.h for the conventions). Without workspaces it uses the
+// the photos (see capture/matte/metrics.h for the conventions). Without workspaces it uses the
 // synthetic scene of the matting tests at a few sizes.
 #include <CLI/CLI.hpp>
 
@@ -13,13 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/matte_image.h"
-#include "capture/matte_metrics.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
-#include "tests/capture/matte_test_scene.h"
+#include "samples/matte_scene.h"
 
 namespace fs = std::filesystem;
 using namespace voltree;
@@ -82,7 +80,7 @@ int main(int argc, char** argv) {
       for (int size : sizes) {
         std::vector<Case> cases;
         for (uint32_t seed = 1; seed <= 3; ++seed) {
-          const test::MatteScene scene = test::MakeMatteScene(size, size * 5 / 6, seed);
+          const MatteScene scene = MakeMatteScene(size, size * 5 / 6, seed);
           cases.push_back({"synthetic", scene.photo, scene.alpha});
         }
         run(cases);

@@ -16,7 +16,7 @@
 #include "core/error.h"
 #include "reconstruct/dda.h"
 #include "reconstruct/reconstruct.h"
-#include "reconstruct/workspace.h"
+#include "reconstruct/reconstruct_workspace.h"
 
 namespace {
 using namespace voltree;

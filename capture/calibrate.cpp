@@ -183,7 +183,7 @@ void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, 
                                 (workspace / "scene.json").string()));
 }
 
-CalibrateReport Calibrate(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
+CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
   options.Check();
   CalibrateReport report;
   const std::vector<std::string> images = ListImages(workspace / "images");

@@ -68,7 +68,7 @@ struct CalibrateReport {
   std::string units;               // "metres" or "reconstruction"
 };
 
-CalibrateReport Calibrate(const std::filesystem::path& workspace, const CalibrateOptions& options,
+CalibrateReport CalibrateWorkspace(const std::filesystem::path& workspace, const CalibrateOptions& options,
                           Progress& progress);
 
 // Recomputes the tree's bounds in DIR/scene.json from DIR/mattes/ and the cameras in DIR/sparse/

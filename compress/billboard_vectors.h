@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "compress/training_set.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

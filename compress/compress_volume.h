@@ -12,7 +12,7 @@
 #include "compress/gla.h"
 #include "core/progress.h"
 #include "core/vtree.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -2,32 +2,30 @@
 
 #include "core/error.h"
 #include "core/files.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
 
-fs::path CompressWorkspace(const fs::path& workspace, const CompressOptions& options,
-                           const CompressWorkspaceOptions& workspace_options, Progress* progress,
-                           CompressStats* stats) {
-  options.Check();
+CompressWorkspaceResult CompressWorkspace(const fs::path& workspace, const CompressWorkspaceOptions& options,
+                                          Progress& progress) {
+  options.compress.Check();
   const fs::path dir = workspace.lexically_normal();
-  const fs::path output = workspace_options.output.empty() ? dir / "tree.vtree" : workspace_options.output;
-  CheckCanWrite(output, workspace_options.force);  // fail before the work, not after
-  if (progress) progress->Say("compress", "reading " + (dir / "volume").string());
+  const fs::path output = options.output.empty() ? dir / "tree.vtree" : options.output;
+  CheckCanWrite(output, options.force);  // fail before the work, not after
+  progress.Say("compress", "reading " + (dir / "volume").string());
   const Volume volume = ReadVolume(dir / "volume");
-  CompressResult result = CompressVolume(volume, options, progress);
+  CompressResult result = CompressVolume(volume, options.compress, &progress);
   // The workspace's folder name only: an absolute path would make the bytes depend on where it lives.
   const fs::path name = dir.filename().empty() ? dir.parent_path().filename() : dir.filename();
   result.asset.provenance["source"] =
-      workspace_options.source_name.empty() ? name.string() : workspace_options.source_name;
+      options.source_name.empty() ? name.string() : options.source_name;
   VtreeWriteOptions write;
-  write.zstd = workspace_options.zstd;
-  write.force = workspace_options.force;
+  write.zstd = options.zstd;
+  write.force = options.force;
   WriteAsset(output, result.asset, write);
-  if (progress) progress->Say("compress", Str("wrote ", output.string(), " (", fs::file_size(output), " bytes)"));
-  if (stats) *stats = std::move(result.stats);
-  return output;
+  progress.Say("compress", Str("wrote ", output.string(), " (", fs::file_size(output), " bytes)"));
+  return {output, std::move(result.stats)};
 }
 
 }  // namespace voltree

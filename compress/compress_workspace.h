@@ -11,6 +11,7 @@
 namespace voltree {
 
 struct CompressWorkspaceOptions {
+  CompressOptions compress;
   std::filesystem::path output;  // empty: DIR/tree.vtree
   bool zstd = false;             // zstd-compress the asset's chunks on disk
   bool force = false;            // overwrite an existing asset
@@ -19,10 +20,14 @@ struct CompressWorkspaceOptions {
   std::string source_name;
 };
 
+struct CompressWorkspaceResult {
+  std::filesystem::path asset;  // where it was written
+  CompressStats stats;
+};
+
 // Reads DIR/volume, compresses it and writes the asset atomically; refuses an existing asset
-// without `force` before any work. Returns the asset's path.
-std::filesystem::path CompressWorkspace(const std::filesystem::path& dir, const CompressOptions& options,
-                                        const CompressWorkspaceOptions& workspace_options, Progress* progress,
-                                        CompressStats* stats = nullptr);
+// without `force` before any work.
+CompressWorkspaceResult CompressWorkspace(const std::filesystem::path& dir, const CompressWorkspaceOptions& options,
+                                          Progress& progress);
 
 }  // namespace voltree

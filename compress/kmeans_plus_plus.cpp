@@ -14,6 +14,7 @@
 #include "compress/centre_bounds.h"
 #include "compress/principal_axes.h"
 #include "compress/vector_distance.h"
+#include "core/check.h"
 #include "core/cpu_features.h"
 #include "core/huge_page_allocator.h"
 
@@ -242,6 +243,8 @@ class BoundedSeeding {
   void AddCell(std::vector<Joiner> joiners, uint32_t centre) {
     tbb::parallel_sort(joiners.begin(), joiners.end());  // a total order: the same result whatever the threads
     if (Used() + joiners.size() > arena_.index.size()) Compact();
+    // Live members number at most the training vectors, and the arena holds half as many again.
+    VT_CHECK(Used() + joiners.size() <= arena_.index.size(), Used(), " members + ", joiners.size(), " joiners");
     Cell cell;
     cell.centre = centre;
     cell.begin = Used();
@@ -273,6 +276,7 @@ class BoundedSeeding {
       cell.begin = begin;
       cell.end = to;
     }
+    VT_CHECK(to <= set_.size() + cells_.size(), "compaction kept ", to, " members of ", set_.size(), " vectors");
   }
 
   const TrainingSet& set_;

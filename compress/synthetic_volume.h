@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

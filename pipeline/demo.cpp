@@ -9,7 +9,7 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "pipeline/demo_folder.h"
-#include "reconstruct/workspace.h"
+#include "reconstruct/reconstruct_workspace.h"
 #include "samples/studio.h"
 
 namespace voltree {
@@ -90,19 +90,20 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
     timed("calibrate", [&] {
       // The true cameras stay as truth; COLMAP's take their place in sparse/.
       fs::rename(workspace / "sparse", workspace / "truth" / "input_sparse");
-      const CalibrateReport report = Calibrate(workspace, options.calibrate, progress);
+      const CalibrateReport report = CalibrateWorkspace(workspace, options.calibrate, progress);
       summary["calibration"] = {{"registered", report.registered},
                                 {"images", report.images},
                                 {"mean_reprojection_error_px", report.mean_reprojection_error}};
     });
   }
-  timed("reconstruct", [&] { ReconstructWorkspace(workspace, options.reconstruct, false, &progress); });
+  timed("reconstruct", [&] { ReconstructWorkspace(workspace, {options.reconstruct}, progress); });
   CompressStats compress_stats;
   timed("compress", [&] {
     CompressWorkspaceOptions where;
+    where.compress = options.compress;
     where.source_name = options.output.lexically_normal().filename().string();  // not the staging folder's
     if (where.source_name.empty()) where.source_name = options.output.lexically_normal().parent_path().filename().string();
-    CompressWorkspace(workspace, options.compress, where, &progress, &compress_stats);
+    compress_stats = CompressWorkspace(workspace, where, progress).stats;
   });
   if (options.orbit.frames > 0)
     timed("orbit", [&] {

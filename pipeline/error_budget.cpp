@@ -11,7 +11,7 @@
 #include "reconstruct/billboard_raster.h"
 #include "reconstruct/dda.h"
 #include "reconstruct/grid.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 #include "render/view_selection.h"
 
 namespace voltree {

@@ -11,7 +11,7 @@
 
 #include "core/camera.h"
 #include "core/image.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -10,7 +10,7 @@
 #include "core/files.h"
 #include "pipeline/report_folder.h"
 #include "pipeline/stage_record.h"
-#include "reconstruct/workspace.h"
+#include "reconstruct/reconstruct_workspace.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -152,7 +152,7 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
   const auto calibrate = [&] {
     CalibrateOptions calibrate = options.calibrate;
     calibrate.force = calibrate.force || options.force;
-    const CalibrateReport report = Calibrate(dir, calibrate, progress);
+    const CalibrateReport report = CalibrateWorkspace(dir, calibrate, progress);
     progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
                                   report.mean_reprojection_error, " px"));
   };
@@ -187,14 +187,15 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     });
   };
   resumable(ReconstructRecipe(options), [&](bool replace) {
-    const Volume volume = ReconstructWorkspace(dir, options.reconstruct, replace, &progress);
+    const Volume volume = ReconstructWorkspace(dir, {options.reconstruct, replace}, progress);
     if (options.guards) CheckVolumeReproducesMattes(dir, volume, options, progress);
   });
   result.asset = dir / "tree.vtree";
   resumable(CompressRecipe(options), [&](bool replace) {
-    CompressWorkspaceOptions workspace_options;
-    workspace_options.force = replace;
-    result.asset = CompressWorkspace(dir, options.compress, workspace_options, &progress);
+    CompressWorkspaceOptions compress;
+    compress.compress = options.compress;
+    compress.force = replace;
+    result.asset = CompressWorkspace(dir, compress, progress).asset;
   });
   const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
   resumable(OrbitRecipe(options), [&](bool replace) {

@@ -1,10 +1,10 @@
 // `voltree run DIR`: the whole pipeline on a user's capture workspace, each stage only as needed:
 //   calibrate    when DIR/sparse/ is missing: COLMAP, then the tree frame (capture/calibrate.h);
 //                first when both mattes/ and sparse/ are missing (photos alone)
-//   matte        when DIR/mattes/ is missing (capture/matte_workspace.h); with photos alone the
+//   matte        when DIR/mattes/ is missing (capture/matte/workspace.h); with photos alone the
 //                mattes that disagree through the cameras are matted again (matte_hull_refine.h)
 //   check        the mattes against each other and the cameras (coverage, visual hull): a guard
-//   reconstruct  DIR/volume/ (reconstruct/workspace.h), then a guard: it reproduces the mattes
+//   reconstruct  DIR/volume/ (reconstruct/reconstruct_workspace.h), then a guard: it reproduces the mattes
 //   compress     DIR/tree.vtree (compress/compress_workspace.h)
 //   orbit        DIR/report/orbit/frame_NNN.png (render job)
 //   eval         DIR/report/{metrics.json,index.html,eval/}: held-out views when DIR/truth/
@@ -18,10 +18,7 @@
 #include <vector>
 
 #include "capture/calibrate.h"
-#include "capture/matte_consistency.h"
-#include "capture/matte_coverage.h"
-#include "capture/matte_hull_refine.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte.h"
 #include "compress/compress_volume.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"

@@ -25,7 +25,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/progress.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

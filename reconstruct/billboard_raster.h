@@ -15,7 +15,7 @@
 
 #include "core/camera.h"
 #include "core/image.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -22,7 +22,7 @@
 #include "core/progress.h"
 #include "reconstruct/matte_stats.h"
 #include "reconstruct/optical_depth.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

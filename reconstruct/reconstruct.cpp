@@ -15,7 +15,7 @@
 #include "reconstruct/carve.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 
 namespace voltree {
 namespace {

@@ -15,7 +15,7 @@
 #include "reconstruct/billboard_fit.h"
 #include "reconstruct/billboards.h"
 #include "reconstruct/opacity.h"
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -55,7 +55,7 @@ TEST(CalibrateImport, NormalizesIntoTheTreeFrame) {
   options.import_model = dir / "import";
   options.height_metres = 2.0;  // the box is 1 high: everything doubles
   Progress quiet(true);
-  const CalibrateReport report = Calibrate(dir, options, quiet);
+  const CalibrateReport report = CalibrateWorkspace(dir, options, quiet);
   EXPECT_EQ(report.registered, 16);
   EXPECT_EQ(report.bounds_source, "visual hull");
   // Base of the box at the origin, top at 2 m; the hull reaches a little below the base (measured
@@ -81,7 +81,7 @@ TEST(CalibrateImport, NormalizesIntoTheTreeFrame) {
   EXPECT_EQ(scene["units"], "metres");
   EXPECT_EQ(scene["source"], "colmap");
   // Again without --force: refused, outputs untouched.
-  EXPECT_THROW(Calibrate(dir, options, quiet), Error);
+  EXPECT_THROW(CalibrateWorkspace(dir, options, quiet), Error);
 }
 
 TEST(CalibrateImport, TooFewRegisteredNamesTheMissingPhotos) {
@@ -93,7 +93,7 @@ TEST(CalibrateImport, TooFewRegisteredNamesTheMissingPhotos) {
   options.import_model = dir / "import";
   Progress quiet(true);
   try {
-    Calibrate(dir, options, quiet);
+    CalibrateWorkspace(dir, options, quiet);
     FAIL() << "expected an Error";
   } catch (const Error& error) {
     const std::string message = error.what();
@@ -102,7 +102,7 @@ TEST(CalibrateImport, TooFewRegisteredNamesTheMissingPhotos) {
   }
   EXPECT_FALSE(fs::exists(dir / "sparse"));
   options.min_registered = 0.7;
-  EXPECT_EQ(Calibrate(dir, options, quiet).registered, 12);
+  EXPECT_EQ(CalibrateWorkspace(dir, options, quiet).registered, 12);
 }
 
 }  // namespace

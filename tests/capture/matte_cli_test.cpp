@@ -9,12 +9,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "capture/matte_metrics.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte/metrics.h"
+#include "capture/matte/workspace.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
-#include "matte_test_scene.h"
+#include "samples/matte_scene.h"
 #include "pipeline/voltree_binary.h"
 
 namespace voltree {
@@ -39,7 +39,7 @@ class MatteCliTest : public ::testing::Test {
 };
 
 TEST_F(MatteCliTest, MattesAWorkspaceAndRefusesToOverwrite) {
-  const test::MatteScene scene = test::MakeMatteScene(160, 128, 5);
+  const MatteScene scene = MakeMatteScene(160, 128, 5);
   const fs::path workspace = dir_ / "ws";
   WriteImage(workspace / "images" / "view_000.png", scene.photo);
   test::Outcome outcome = Run(Str("matte '", workspace.string(), "' --refine guided"));
@@ -56,11 +56,11 @@ TEST_F(MatteCliTest, MattesAWorkspaceAndRefusesToOverwrite) {
 
   outcome = Run(Str("matte '", workspace.string(), "' --refine magic"));
   EXPECT_NE(outcome.status, 0);
-  EXPECT_NE(outcome.output.find("guided, infoflow or none"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("--refine 'magic': expected one of infoflow, guided, none"), std::string::npos) << outcome.output;
 }
 
 TEST_F(MatteCliTest, ImportsUserMattes) {
-  const test::MatteScene scene = test::MakeMatteScene(96, 80, 6);
+  const MatteScene scene = MakeMatteScene(96, 80, 6);
   const fs::path workspace = dir_ / "ws";
   WriteImage(workspace / "images" / "a.png", scene.photo);
   // An RGBA user matte: its alpha channel is the matte.

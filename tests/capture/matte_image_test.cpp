@@ -1,4 +1,4 @@
-#include "capture/matte_image.h"
+#include "capture/matte/image.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "capture/matte_metrics.h"
+#include "capture/matte/metrics.h"
 #include "core/error.h"
-#include "matte_test_scene.h"
+#include "samples/matte_scene.h"
 
 namespace voltree {
 namespace {
@@ -20,7 +20,7 @@ struct Measured {
   MatteResult result;
 };
 
-Measured RunOnScene(const test::MatteScene& scene, RefineMethod method) {
+Measured RunOnScene(const MatteScene& scene, RefineMethod method) {
   MatteOptions options;
   options.refine = method;
   options.Check();
@@ -44,20 +44,20 @@ Measured RunOnScene(const test::MatteScene& scene, RefineMethod method) {
 }
 
 TEST(MatteImage, GuidedRecoversSyntheticMatte) {
-  const test::MatteScene scene = test::MakeMatteScene(192, 160);
+  const MatteScene scene = MakeMatteScene(192, 160);
   const Measured m = RunOnScene(scene, RefineMethod::kGuided);
   EXPECT_NEAR(m.result.horizon_row, scene.horizon_row, 2);
   EXPECT_LT(m.error.mse, 1.0);  // measured 0.57 (x1e3); a wrong trimap or sky model gives > 10
 }
 
 TEST(MatteImage, NoneRecoversSyntheticMatte) {
-  const test::MatteScene scene = test::MakeMatteScene(192, 160);
+  const MatteScene scene = MakeMatteScene(192, 160);
   const Measured m = RunOnScene(scene, RefineMethod::kNone);
   EXPECT_LT(m.error.mse, 1.5);  // measured 0.88: the hard trunk edge below the horizon stays hard
 }
 
 TEST(MatteImage, InfoFlowRecoversSyntheticMatte) {
-  const test::MatteScene scene = test::MakeMatteScene(192, 160);
+  const MatteScene scene = MakeMatteScene(192, 160);
   const Measured m = RunOnScene(scene, RefineMethod::kInfoFlow);
   EXPECT_LT(m.error.mse, 0.4);  // measured 0.14: infoFlow solves the trunk edge band best
 }
@@ -66,14 +66,14 @@ TEST(MatteImage, InfoFlowRecoversSyntheticMatte) {
 // returns a blob (measured MSE 141 x1e3, a known gap; all-opaque would be ~800); the studio's
 // look-down views fare far better (see matte_cli_test).
 TEST(MatteImage, CutsTheTreeFromGroundWithoutSky) {
-  const test::MatteScene scene = test::MakeMatteScene(192, 160, 1, 0.0f);
+  const MatteScene scene = MakeMatteScene(192, 160, 1, 0.0f);
   const Measured m = RunOnScene(scene, RefineMethod::kGuided);
   EXPECT_EQ(m.result.horizon_row, 0);
   EXPECT_LT(m.error.mse, 200.0);
 }
 
 TEST(MatteImage, SameResultTwice) {
-  const test::MatteScene scene = test::MakeMatteScene(128, 112, 4);
+  const MatteScene scene = MakeMatteScene(128, 112, 4);
   MatteOptions options;
   const MatteResult a = MatteImage(scene.photo, options), b = MatteImage(scene.photo, options);
   EXPECT_EQ(a.alpha, b.alpha);

@@ -1,4 +1,4 @@
-#include "capture/matte_workspace.h"
+#include "capture/matte/workspace.h"
 
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <string>
 #include <unistd.h>
 
-#include "capture/matte_metrics.h"
+#include "capture/matte/metrics.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
-#include "matte_test_scene.h"
+#include "samples/matte_scene.h"
 
 namespace voltree {
 namespace {
@@ -33,7 +33,7 @@ class MatteWorkspaceTest : public ::testing::Test {
 
   // Two photos of different sizes (allowed), with their true mattes kept in truth/.
   void WriteScenes() {
-    const test::MatteScene a = test::MakeMatteScene(128, 112, 1), b = test::MakeMatteScene(112, 128, 2);
+    const MatteScene a = MakeMatteScene(128, 112, 1), b = MakeMatteScene(112, 128, 2);
     WriteImage(dir_ / "images" / "view_000.png", a.photo);
     WriteImage(dir_ / "images" / "view_001.png", b.photo);
     WriteImage(dir_ / "truth" / "view_000.png", a.alpha);
@@ -141,7 +141,7 @@ TEST_F(MatteWorkspaceTest, UserMatteMissingOrWrongSizeNamesBothFiles) {
 // A portrait JPEG stored sideways with EXIF Orientation 6 (turn 90 degrees clockwise to show):
 // its matte is upright, and an upright user matte is accepted.
 TEST_F(MatteWorkspaceTest, HonoursExifOrientation) {
-  const test::MatteScene scene = test::MakeMatteScene(96, 128, 3);  // upright: 96 wide, 128 high
+  const MatteScene scene = MakeMatteScene(96, 128, 3);  // upright: 96 wide, 128 high
   // Stored sideways (128 wide, 96 high): Orientation 6 says stored row 0 is the right-hand column
   // of the upright photo and stored column 0 its top row.
   Image8 stored(scene.photo.height, scene.photo.width, 3);

@@ -8,8 +8,8 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
-#include "reconstruct/volume_io.h"
-#include "reconstruct/workspace.h"
+#include "core/volume_io.h"
+#include "reconstruct/reconstruct_workspace.h"
 #include "synthetic_scene.h"
 
 namespace voltree {
@@ -117,7 +117,7 @@ TEST(BadInput, WorkspaceWithEmptyMattesWritesNothing) {
   options.levels = 4;
   Progress quiet(true);
   try {
-    ReconstructWorkspace(dir.path, options, false, &quiet);
+    ReconstructWorkspace(dir.path, {options}, quiet);
     ADD_FAILURE() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(dir.path.string()), std::string::npos) << e.what();
@@ -133,7 +133,7 @@ TEST(BadInput, MissingMatteNamesTheFile) {
   fs::remove(dir.path / "mattes" / "view_004.png");
   Progress quiet(true);
   try {
-    ReconstructWorkspace(dir.path, ReconstructOptions{}, false, &quiet);
+    ReconstructWorkspace(dir.path, {}, quiet);
     ADD_FAILURE() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("mattes/view_004.png: missing matte"), std::string::npos) << e.what();

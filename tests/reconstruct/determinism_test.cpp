@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/files.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 #include "synthetic_scene.h"
 #include "needs_two_cores.h"
 

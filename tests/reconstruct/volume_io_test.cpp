@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 #include "synthetic_scene.h"
 
 namespace voltree {

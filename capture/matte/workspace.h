@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "capture/matte_coverage.h"
-#include "capture/matte_options.h"
+#include "capture/matte/coverage.h"
+#include "capture/matte/options.h"
 #include "core/progress.h"
 
 namespace voltree {

@@ -3,7 +3,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/matte_options.h"
+#include "capture/matte/options.h"
 
 namespace voltree::matte {
 

@@ -1,4 +1,4 @@
-#include "capture/matte_fill.h"
+#include "capture/matte/fill.h"
 
 #include <vector>
 

@@ -1,11 +1,11 @@
-#include "capture/matte_image.h"
+#include "capture/matte/image.h"
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/matte_cv.h"
-#include "capture/matte_foreground.h"
-#include "capture/matte_refine.h"
-#include "capture/matte_trimap.h"
+#include "capture/matte/cv.h"
+#include "capture/matte/foreground.h"
+#include "capture/matte/refine.h"
+#include "capture/matte/trimap.h"
 #include "core/error.h"
 
 namespace voltree {

@@ -1,4 +1,4 @@
-#include "capture/matte_workspace.h"
+#include "capture/matte/workspace.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,8 +11,8 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "capture/matte_foreground.h"
-#include "capture/matte_image.h"
+#include "capture/matte/foreground.h"
+#include "capture/matte/image.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"

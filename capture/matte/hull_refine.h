@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "capture/matte_consistency.h"
-#include "capture/matte_options.h"
+#include "capture/matte/consistency.h"
+#include "capture/matte/options.h"
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/progress.h"

@@ -1,4 +1,4 @@
-#include "capture/matte_metrics.h"
+#include "capture/matte/metrics.h"
 
 #include <cmath>
 #include <cstdlib>

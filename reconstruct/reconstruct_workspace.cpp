@@ -1,4 +1,4 @@
-#include "reconstruct/workspace.h"
+#include "reconstruct/reconstruct_workspace.h"
 
 #include <algorithm>
 
@@ -12,7 +12,7 @@
 #include "reconstruct/carve.h"
 #include "reconstruct/grid.h"
 #include "reconstruct/matte_stats.h"
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -159,16 +159,17 @@ ReconstructInput LoadReconstructInput(const fs::path& dir, const ReconstructOpti
   return input;
 }
 
-Volume ReconstructWorkspace(const fs::path& dir, const ReconstructOptions& options, bool force, Progress* progress) {
-  options.Check();
+Volume ReconstructWorkspace(const fs::path& dir, const ReconstructWorkspaceOptions& options, Progress& progress) {
+  const ReconstructOptions& reconstruct = options.reconstruct;
+  reconstruct.Check();
   const fs::path out = dir / "volume";
-  CheckCanReplaceFolder(out, force);
-  const ReconstructInput input = LoadReconstructInput(dir, options, progress);
-  Volume volume = Reconstruct(input, options, progress);
-  nlohmann::json recorded = ResolveLevels(input, options).ToJson();
-  if (options.auto_levels) recorded["levels_auto"] = true;
-  WriteVolume(out, volume, {{"stage", "reconstruct"}, {"options", recorded}}, force);
-  if (progress) progress->Say("reconstruct", Str("wrote ", out.string()));
+  CheckCanReplaceFolder(out, options.force);
+  const ReconstructInput input = LoadReconstructInput(dir, reconstruct, &progress);
+  Volume volume = Reconstruct(input, reconstruct, &progress);
+  nlohmann::json recorded = ResolveLevels(input, reconstruct).ToJson();
+  if (reconstruct.auto_levels) recorded["levels_auto"] = true;
+  WriteVolume(out, volume, {{"stage", "reconstruct"}, {"options", recorded}}, options.force);
+  progress.Say("reconstruct", Str("wrote ", out.string()));
   return volume;
 }
 

@@ -1,10 +1,10 @@
-#include "capture/matte_foreground.h"
+#include "capture/matte/foreground.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "capture/matte_cv.h"
-#include "capture/matte_fill.h"
+#include "capture/matte/cv.h"
+#include "capture/matte/fill.h"
 #include "core/error.h"
 
 namespace voltree {

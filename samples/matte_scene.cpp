@@ -1,32 +1,21 @@
-// A synthetic photo for the matting tests: blue sky gradient, textured ground below a horizon, a
-// noisy green crown with fractional alpha and a brown trunk that crosses the horizon. Everything
-// is composited from known layers, so the true alpha and premultiplied foreground are exact.
-#pragma once
+#include "samples/matte_scene.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
-#include "core/image.h"
+namespace voltree {
 
-namespace voltree::test {
-
-struct MatteScene {
-  Image8 photo;       // RGB
-  Image8 alpha;       // true matte
-  Image8 foreground;  // true premultiplied RGBA
-  int horizon_row = 0;
-};
+namespace {
 
 // Deterministic hash noise in [0, 1).
-inline float Hash(int x, int y, uint32_t seed) {
+float Hash(int x, int y, uint32_t seed) {
   uint32_t h = uint32_t(x) * 374761393u + uint32_t(y) * 668265263u + seed * 2246822519u;
   h = (h ^ (h >> 13)) * 1274126177u;
   return float((h ^ (h >> 16)) & 0xffffff) / float(0x1000000);
 }
 
 // Bilinear value noise with `cell`-pixel cells.
-inline float ValueNoise(float x, float y, float cell, uint32_t seed) {
+float ValueNoise(float x, float y, float cell, uint32_t seed) {
   const float u = x / cell, v = y / cell;
   const int i = int(std::floor(u)), j = int(std::floor(v));
   const float fu = u - i, fv = v - j;
@@ -34,9 +23,9 @@ inline float ValueNoise(float x, float y, float cell, uint32_t seed) {
   return (a * (1 - fu) + b * fu) * (1 - fv) + (c * (1 - fu) + d * fu) * fv;
 }
 
-// `horizon` is the horizon row as a fraction of the height; 0 photographs the tree against ground
-// only (a camera looking down).
-inline MatteScene MakeMatteScene(int width, int height, uint32_t seed = 1, float horizon = 0.62f) {
+}  // namespace
+
+MatteScene MakeMatteScene(int width, int height, uint32_t seed, float horizon) {
   MatteScene scene;
   scene.photo = Image8(width, height, 3);
   scene.alpha = Image8(width, height, 1);
@@ -86,4 +75,4 @@ inline MatteScene MakeMatteScene(int width, int height, uint32_t seed = 1, float
   return scene;
 }
 
-}  // namespace voltree::test
+}  // namespace voltree

@@ -29,9 +29,14 @@ std::filesystem::path CompanionPath(const std::filesystem::path& dir, const char
 ReconstructInput LoadReconstructInput(const std::filesystem::path& dir, const ReconstructOptions& options,
                                       Progress* progress);
 
+struct ReconstructWorkspaceOptions {
+  ReconstructOptions reconstruct;
+  bool force = false;  // replace an existing DIR/volume
+};
+
 // Loads, reconstructs and writes DIR/volume atomically. Refuses an existing volume/ without force
 // before any work is done.
-Volume ReconstructWorkspace(const std::filesystem::path& dir, const ReconstructOptions& options, bool force,
-                            Progress* progress);
+Volume ReconstructWorkspace(const std::filesystem::path& dir, const ReconstructWorkspaceOptions& options,
+                            Progress& progress);
 
 }  // namespace voltree

@@ -1,4 +1,4 @@
-#include "capture/matte_consistency.h"
+#include "capture/matte/consistency.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

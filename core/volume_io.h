@@ -26,7 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "reconstruct/volume.h"
+#include "core/volume.h"
 
 namespace voltree {
 

@@ -1,4 +1,4 @@
-#include "capture/matte_coverage.h"
+#include "capture/matte/coverage.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "capture/matte_sky.h"
+#include "capture/matte/sky.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/matte_options.h"
+#include "capture/matte/options.h"
 
 namespace voltree::matte {
 

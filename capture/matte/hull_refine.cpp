@@ -1,4 +1,4 @@
-#include "capture/matte_hull_refine.h"
+#include "capture/matte/hull_refine.h"
 
 #include <tbb/parallel_for.h>
 
@@ -6,10 +6,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/colmap_binary.h"
-#include "capture/matte_cv.h"
-#include "capture/matte_foreground.h"
-#include "capture/matte_refine.h"
-#include "capture/matte_workspace.h"
+#include "capture/matte/cv.h"
+#include "capture/matte/foreground.h"
+#include "capture/matte/refine.h"
+#include "capture/matte/workspace.h"
 #include "core/error.h"
 
 namespace voltree {

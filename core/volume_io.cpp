@@ -1,4 +1,4 @@
-#include "reconstruct/volume_io.h"
+#include "core/volume_io.h"
 
 #include <bit>
 #include <cmath>

@@ -2,7 +2,7 @@
 // the method, matte_options.h for its settings).
 #pragma once
 
-#include "capture/matte_options.h"
+#include "capture/matte/options.h"
 #include "core/image.h"
 
 namespace voltree {

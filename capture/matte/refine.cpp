@@ -1,4 +1,4 @@
-#include "capture/matte_refine.h"
+#include "capture/matte/refine.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "capture/matte_trimap.h"
+#include "capture/matte/trimap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/matte_fill.h"
-#include "capture/matte_sky.h"
+#include "capture/matte/fill.h"
+#include "capture/matte/sky.h"
 
 namespace voltree::matte {
 

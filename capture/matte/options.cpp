@@ -1,4 +1,4 @@
-#include "capture/matte_options.h"
+#include "capture/matte/options.h"
 
 #include "core/error.h"
 
