@@ -6,6 +6,7 @@
 
 #include "core/byte_reader.h"
 #include "core/byte_writer.h"
+#include "core/crc32.h"
 #include "core/error.h"
 #include "core/files.h"
 
@@ -15,15 +16,15 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'V', 'T', 'V', 'O', 'L', 'B', 'I', 'N'};
-constexpr uint32_t kVersion = 1;
+// 2: CRC-32 (as .vtree) instead of FNV-1a 64 at the end of volume.bin.
+constexpr uint32_t kVersion = 2;
 
-uint64_t Fnv1a64(std::string_view bytes) {
-  uint64_t hash = 1469598103934665603ull;
-  for (const char byte : bytes) {
-    hash ^= static_cast<uint8_t>(byte);
-    hash *= 1099511628211ull;
-  }
-  return hash;
+// A volume of another version, seen in either of its files: the way out is to reconstruct again.
+[[noreturn]] void UnsupportedVersion(const std::string& file, int64_t version) {
+  if (version >= 1 && version < int64_t(kVersion))
+    Fail(file, ": volume version ", version, " was written by an older voltree; run 'voltree reconstruct' again "
+         "(with --force to replace the volume; this build reads version ", kVersion, ")");
+  Fail(file, ": unsupported volume version ", version, " (this build reads version ", kVersion, ")");
 }
 
 uint64_t Resolution(int branching, int level) {
@@ -121,7 +122,7 @@ std::string EncodeVolumeBinary(const Volume& volume) {
     }
     out.Array<uint8_t>(level.texels);
   }
-  out.Le(Fnv1a64(out.bytes()));
+  out.Le(Crc32(out.bytes().data(), out.bytes().size()));
   return out.Take();
 }
 
@@ -180,8 +181,7 @@ Volume ReadVolume(const fs::path& folder) {
   Volume volume;
   try {
     if (doc.value("format", "") != "voltree-volume") Fail(json_file, ": field 'format' must be \"voltree-volume\"");
-    if (doc.at("version").get<int>() != int(kVersion))
-      Fail(json_file, ": unsupported version ", doc.at("version").dump(), ", expected ", kVersion);
+    if (const int version = doc.at("version").get<int>(); version != int(kVersion)) UnsupportedVersion(json_file, version);
     volume.origin = VecFrom(doc.at("origin"), json_file, "origin");
     volume.size = doc.at("size").get<double>();
     volume.branching = doc.at("branching").get<int>();
@@ -201,14 +201,15 @@ Volume ReadVolume(const fs::path& folder) {
   const std::string bytes = ReadFile(bin_path);
   if (bytes.size() < sizeof(kMagic) + 8) Fail(bin_file, ": too short (", bytes.size(), " bytes) to be a volume");
   if (std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) Fail(bin_file, ": bad magic, expected \"VTVOLBIN\"");
-  const std::string_view payload = std::string_view(bytes).substr(0, bytes.size() - sizeof(uint64_t));
-  ByteReader checksum(std::string_view(bytes).substr(payload.size()), bin_file);
-  if (checksum.U64("the checksum") != Fnv1a64(payload)) Fail(bin_file, ": checksum mismatch (file is corrupt)");
-
+  // The version before the checksum: an older file has another checksum and deserves the better message.
+  const std::string_view payload = std::string_view(bytes).substr(0, bytes.size() - sizeof(uint32_t));
   ByteReader in(payload, bin_file);
   in.Take(sizeof(kMagic), "the magic");
-  const uint32_t version = in.U32("the version");
-  if (version != kVersion) Fail(bin_file, ": unsupported version ", version, ", expected ", kVersion);
+  if (const uint32_t version = in.U32("the version"); version != kVersion) UnsupportedVersion(bin_file, version);
+  ByteReader checksum(std::string_view(bytes).substr(payload.size()), bin_file);
+  if (checksum.U32("the checksum") != Crc32(payload.data(), payload.size()))
+    Fail(bin_file, ": checksum mismatch (file is corrupt)");
+
   const uint32_t texels = in.U32("texels");
   const uint32_t branching = in.U32("branching");
   const uint32_t level_count = in.U32("the level count");
