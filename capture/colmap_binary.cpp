@@ -3,11 +3,11 @@
 #include "capture/colmap_binary.h"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <string>
 
+#include "core/byte_reader.h"
 #include "core/error.h"
 #include "core/files.h"
 
@@ -36,174 +36,135 @@ const char* ColmapModelName(int32_t id) {
   return id >= 0 && id < 11 ? kNames[id] : "unknown";
 }
 
-// A whole file in memory with a cursor; every read checks that the bytes are there.
-class BinaryReader {
- public:
-  explicit BinaryReader(const fs::path& path) : name_(path.string()), bytes_(ReadFile(path)) {}
+double FiniteDouble(ByteReader& in, const char* what) {
+  const size_t at = in.offset();
+  const double value = in.F64(what);
+  if (!std::isfinite(value)) in.FailAt(at, what, " is not a finite number");
+  return value;
+}
 
-  template <typename T>
-  T Read(const char* what) {
-    Need(sizeof(T), what);
-    T value;
-    std::memcpy(&value, bytes_.data() + offset_, sizeof(T));  // little endian, as on x86 and ARM
-    offset_ += sizeof(T);
-    return value;
-  }
+// A count of records of at least `record_size` bytes each; rejects counts the file cannot hold,
+// so corrupt counts never turn into huge allocations.
+uint64_t RecordCount(ByteReader& in, const char* what, size_t record_size) {
+  const size_t at = in.offset();
+  const uint64_t count = in.U64(what);
+  if (record_size > 0 && count > in.remaining() / record_size)
+    in.FailAt(at, what, " says ", count, " but only ", in.remaining(), " bytes follow");
+  return count;
+}
 
-  double ReadDouble(const char* what) {
-    const size_t at = offset_;
-    const double value = Read<double>(what);
-    if (!std::isfinite(value)) FailHere(at, what, " is not a finite number");
-    return value;
-  }
-
-  std::string ReadName() {
-    const size_t end = bytes_.find('\0', offset_);
-    if (end == std::string::npos) FailHere(offset_, "image name", " has no terminating NUL (file truncated?)");
-    std::string name = bytes_.substr(offset_, end - offset_);
-    offset_ = end + 1;
-    return name;
-  }
-
-  // A count of records of at least `record_size` bytes each; rejects counts the file cannot hold,
-  // so corrupt counts never turn into huge allocations.
-  uint64_t ReadCount(const char* what, size_t record_size) {
-    const size_t at = offset_;
-    const uint64_t count = Read<uint64_t>(what);
-    if (record_size > 0 && count > (bytes_.size() - offset_) / record_size)
-      FailHere(at, what, Str(" says ", count, " but only ", bytes_.size() - offset_, " bytes follow"));
-    return count;
-  }
-
-  void ExpectEnd() const {
-    if (offset_ != bytes_.size())
-      FailHere(offset_, bytes_.size() - offset_, " unexpected bytes after the last record");
-  }
-
-  size_t offset() const { return offset_; }
-  const std::string& name() const { return name_; }
-
-  template <typename... Args>
-  [[noreturn]] void FailHere(size_t at, const Args&... args) const {
-    Fail(name_, ": byte ", at, ": ", args...);
-  }
-
- private:
-  void Need(size_t count, const char* what) const {
-    if (bytes_.size() - offset_ < count)
-      FailHere(offset_, "file ends while reading ", what, " (truncated or not a COLMAP model)");
-  }
-
-  std::string name_;
-  std::string bytes_;
-  size_t offset_ = 0;
-};
+void ExpectEnd(const ByteReader& in) {
+  if (in.remaining() != 0) in.FailAt(in.offset(), in.remaining(), " unexpected bytes after the last record");
+}
 
 void ReadCameras(const fs::path& path, ColmapModel* model) {
-  BinaryReader in(path);
+  const std::string bytes = ReadFile(path);
+  ByteReader in(bytes, path.string());
   constexpr size_t kMinRecord = 4 + 4 + 8 + 8 + 3 * 8;
-  const uint64_t count = in.ReadCount("camera count", kMinRecord);
+  const uint64_t count = RecordCount(in, "camera count", kMinRecord);
   for (uint64_t i = 0; i < count; ++i) {
     const size_t record = in.offset();
-    const uint32_t id = in.Read<uint32_t>("CAMERA_ID");
-    const int32_t model_id = in.Read<int32_t>("MODEL_ID");
+    const uint32_t id = in.U32("CAMERA_ID");
+    const int32_t model_id = in.I32("MODEL_ID");
     const auto camera_model = ModelFromColmapId(model_id);
     if (!camera_model)
-      in.FailHere(record, "camera ", id, " uses COLMAP model ", model_id, " (", ColmapModelName(model_id),
-                  "), expected SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV");
+      in.FailAt(record, "camera ", id, " uses COLMAP model ", model_id, " (", ColmapModelName(model_id),
+                "), expected SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV");
     Camera camera;
     camera.model = *camera_model;
-    const uint64_t width = in.Read<uint64_t>("WIDTH"), height = in.Read<uint64_t>("HEIGHT");
+    const uint64_t width = in.U64("WIDTH"), height = in.U64("HEIGHT");
     if (width > uint64_t(std::numeric_limits<int>::max()) || height > uint64_t(std::numeric_limits<int>::max()))
-      in.FailHere(record, "camera ", id, " size ", width, "x", height, " is too large");
+      in.FailAt(record, "camera ", id, " size ", width, "x", height, " is too large");
     camera.width = int(width);
     camera.height = int(height);
-    for (int p = 0; p < CameraModelParamCount(camera.model); ++p) camera.params.push_back(in.ReadDouble("PARAMS"));
+    for (int p = 0; p < CameraModelParamCount(camera.model); ++p) camera.params.push_back(FiniteDouble(in, "PARAMS"));
     try {
       camera.Check();
     } catch (const Error& error) {
-      in.FailHere(record, "camera ", id, ": ", error.what());
+      in.FailAt(record, "camera ", id, ": ", error.what());
     }
     if (id > uint32_t(std::numeric_limits<int>::max()) || !model->cameras.emplace(int(id), camera).second)
-      in.FailHere(record, "duplicate or invalid CAMERA_ID ", id);
+      in.FailAt(record, "duplicate or invalid CAMERA_ID ", id);
   }
-  in.ExpectEnd();
+  ExpectEnd(in);
 }
 
 void ReadImages(const fs::path& path, ColmapModel* model) {
-  BinaryReader in(path);
+  const std::string bytes = ReadFile(path);
+  ByteReader in(bytes, path.string());
   constexpr size_t kMinRecord = 4 + 7 * 8 + 4 + 1 + 8;
-  const uint64_t count = in.ReadCount("image count", kMinRecord);
+  const uint64_t count = RecordCount(in, "image count", kMinRecord);
   constexpr uint64_t kInvalidPoint = std::numeric_limits<uint64_t>::max();
   for (uint64_t i = 0; i < count; ++i) {
     const size_t record = in.offset();
     ColmapImage image;
-    const uint32_t id = in.Read<uint32_t>("IMAGE_ID");
-    if (id > uint32_t(std::numeric_limits<int>::max())) in.FailHere(record, "IMAGE_ID ", id, " is too large");
+    const uint32_t id = in.U32("IMAGE_ID");
+    if (id > uint32_t(std::numeric_limits<int>::max())) in.FailAt(record, "IMAGE_ID ", id, " is too large");
     image.image_id = int(id);
     Eigen::Quaterniond q;
-    q.w() = in.ReadDouble("QW");
-    q.x() = in.ReadDouble("QX");
-    q.y() = in.ReadDouble("QY");
-    q.z() = in.ReadDouble("QZ");
-    if (!(q.squaredNorm() > 1e-20)) in.FailHere(record, "image ", id, ": quaternion is zero");
+    q.w() = FiniteDouble(in, "QW");
+    q.x() = FiniteDouble(in, "QX");
+    q.y() = FiniteDouble(in, "QY");
+    q.z() = FiniteDouble(in, "QZ");
+    if (!(q.squaredNorm() > 1e-20)) in.FailAt(record, "image ", id, ": quaternion is zero");
     if (std::abs(q.squaredNorm() - 1.0) > 1e-14) q.normalize();
     image.pose.rotation = q;
-    for (int k = 0; k < 3; ++k) image.pose.translation[k] = in.ReadDouble("translation");
-    const uint32_t camera_id = in.Read<uint32_t>("CAMERA_ID");
+    for (int k = 0; k < 3; ++k) image.pose.translation[k] = FiniteDouble(in, "translation");
+    const uint32_t camera_id = in.U32("CAMERA_ID");
     if (camera_id > uint32_t(std::numeric_limits<int>::max()) || !model->cameras.count(int(camera_id)))
-      in.FailHere(record, "image ", id, " names CAMERA_ID ", camera_id, " which is not in cameras.bin");
+      in.FailAt(record, "image ", id, " names CAMERA_ID ", camera_id, " which is not in cameras.bin");
     image.camera_id = int(camera_id);
-    image.name = in.ReadName();
-    const uint64_t points = in.ReadCount("POINTS2D count", 3 * 8);
+    image.name = std::string(in.UntilNul("image name"));
+    const uint64_t points = RecordCount(in, "POINTS2D count", 3 * 8);
     image.keypoints.reserve(points);
     image.point3d_ids.reserve(points);
     for (uint64_t p = 0; p < points; ++p) {
-      const double x = in.ReadDouble("X"), y = in.ReadDouble("Y");
+      const double x = FiniteDouble(in, "X"), y = FiniteDouble(in, "Y");
       image.keypoints.emplace_back(x, y);
       const size_t at = in.offset();
-      const uint64_t point_id = in.Read<uint64_t>("POINT3D_ID");
+      const uint64_t point_id = in.U64("POINT3D_ID");
       if (point_id != kInvalidPoint && point_id > uint64_t(std::numeric_limits<int64_t>::max()))
-        in.FailHere(at, "POINT3D_ID ", point_id, " is too large");
+        in.FailAt(at, "POINT3D_ID ", point_id, " is too large");
       image.point3d_ids.push_back(point_id == kInvalidPoint ? -1 : int64_t(point_id));
     }
     if (!model->images.emplace(image.image_id, std::move(image)).second)
-      in.FailHere(record, "duplicate IMAGE_ID ", id);
+      in.FailAt(record, "duplicate IMAGE_ID ", id);
   }
-  in.ExpectEnd();
+  ExpectEnd(in);
 }
 
 void ReadPoints(const fs::path& path, ColmapModel* model) {
-  BinaryReader in(path);
+  const std::string bytes = ReadFile(path);
+  ByteReader in(bytes, path.string());
   constexpr size_t kMinRecord = 8 + 3 * 8 + 3 + 8 + 8;
-  const uint64_t count = in.ReadCount("point count", kMinRecord);
+  const uint64_t count = RecordCount(in, "point count", kMinRecord);
   for (uint64_t i = 0; i < count; ++i) {
     const size_t record = in.offset();
     ColmapPoint point;
-    const uint64_t id = in.Read<uint64_t>("POINT3D_ID");
-    if (id > uint64_t(std::numeric_limits<int64_t>::max())) in.FailHere(record, "POINT3D_ID ", id, " is too large");
+    const uint64_t id = in.U64("POINT3D_ID");
+    if (id > uint64_t(std::numeric_limits<int64_t>::max())) in.FailAt(record, "POINT3D_ID ", id, " is too large");
     point.point_id = int64_t(id);
-    for (int k = 0; k < 3; ++k) point.position[k] = in.ReadDouble("XYZ");
-    for (int k = 0; k < 3; ++k) point.color[k] = in.Read<uint8_t>("RGB");
-    point.error = in.ReadDouble("ERROR");
-    const uint64_t track = in.ReadCount("track length", 8);
+    for (int k = 0; k < 3; ++k) point.position[k] = FiniteDouble(in, "XYZ");
+    for (int k = 0; k < 3; ++k) point.color[k] = in.U8("RGB");
+    point.error = FiniteDouble(in, "ERROR");
+    const uint64_t track = RecordCount(in, "track length", 8);
     point.track.reserve(track);
     for (uint64_t t = 0; t < track; ++t) {
-      const uint32_t image_id = in.Read<uint32_t>("IMAGE_ID");
-      const uint32_t index = in.Read<uint32_t>("POINT2D_IDX");
+      const uint32_t image_id = in.U32("IMAGE_ID");
+      const uint32_t index = in.U32("POINT2D_IDX");
       const auto image = image_id <= uint32_t(std::numeric_limits<int>::max()) ? model->images.find(int(image_id))
                                                                                : model->images.end();
       if (image == model->images.end())
-        in.FailHere(record, "point ", id, ": track names IMAGE_ID ", image_id, " which is not in images.bin");
+        in.FailAt(record, "point ", id, ": track names IMAGE_ID ", image_id, " which is not in images.bin");
       const size_t keypoints = image->second.keypoints.size();
       if (keypoints > 0 && index >= keypoints)
-        in.FailHere(record, "point ", id, ": POINT2D_IDX ", index, " out of range for image ", image_id);
+        in.FailAt(record, "point ", id, ": POINT2D_IDX ", index, " out of range for image ", image_id);
       point.track.emplace_back(int(image_id), int(index));
     }
     if (!model->points.emplace(point.point_id, std::move(point)).second)
-      in.FailHere(record, "duplicate POINT3D_ID ", id);
+      in.FailAt(record, "duplicate POINT3D_ID ", id);
   }
-  in.ExpectEnd();
+  ExpectEnd(in);
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 #include "core/volume_io.h"
 
-#include <bit>
 #include <cmath>
 #include <cstring>
+#include <string_view>
 
+#include "core/byte_reader.h"
+#include "core/byte_writer.h"
+#include "core/crc32.h"
 #include "core/error.h"
 #include "core/files.h"
 
@@ -13,64 +16,16 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'V', 'T', 'V', 'O', 'L', 'B', 'I', 'N'};
-constexpr uint32_t kVersion = 1;
-static_assert(std::endian::native == std::endian::little, "volume.bin I/O assumes a little-endian host");
+// 2: CRC-32 (as .vtree) instead of FNV-1a 64 at the end of volume.bin.
+constexpr uint32_t kVersion = 2;
 
-uint64_t Fnv1a64(const char* data, size_t size) {
-  uint64_t hash = 1469598103934665603ull;
-  for (size_t i = 0; i < size; ++i) {
-    hash ^= static_cast<uint8_t>(data[i]);
-    hash *= 1099511628211ull;
-  }
-  return hash;
+// A volume of another version, seen in either of its files: the way out is to reconstruct again.
+[[noreturn]] void UnsupportedVersion(const std::string& file, int64_t version) {
+  if (version >= 1 && version < int64_t(kVersion))
+    Fail(file, ": volume version ", version, " was written by an older voltree; run 'voltree reconstruct' again "
+         "(with --force to replace the volume; this build reads version ", kVersion, ")");
+  Fail(file, ": unsupported volume version ", version, " (this build reads version ", kVersion, ")");
 }
-
-template <typename T>
-void Put(std::string* out, const T& value) {
-  out->append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <typename T>
-void PutArray(std::string* out, const T* data, size_t count) {
-  out->append(reinterpret_cast<const char*>(data), count * sizeof(T));
-}
-
-// Sequential reader over volume.bin that never reads past the end.
-class Reader {
- public:
-  Reader(const std::string& bytes, size_t end, std::string file) : bytes_(bytes), end_(end), file_(std::move(file)) {}
-
-  template <typename T>
-  T Get(const char* what) {
-    T value;
-    Need(sizeof(T), what);
-    std::memcpy(&value, bytes_.data() + position_, sizeof(T));
-    position_ += sizeof(T);
-    return value;
-  }
-
-  template <typename T>
-  void GetArray(T* data, uint64_t count, const char* what) {
-    if (count > (end_ - position_) / sizeof(T)) Short(count * sizeof(T), what);
-    std::memcpy(data, bytes_.data() + position_, count * sizeof(T));
-    position_ += count * sizeof(T);
-  }
-
-  size_t position() const { return position_; }
-
- private:
-  void Need(size_t size, const char* what) {
-    if (size > end_ - position_) Short(size, what);
-  }
-  [[noreturn]] void Short(uint64_t size, const char* what) {
-    Fail(file_, ": truncated at byte ", position_, ": expected ", size, " more bytes for ", what,
-         ", only ", end_ - position_, " left");
-  }
-  const std::string& bytes_;
-  size_t end_;
-  size_t position_ = 0;
-  std::string file_;
-};
 
 uint64_t Resolution(int branching, int level) {
   uint64_t r = 1;
@@ -145,30 +100,30 @@ void CheckVolume(const Volume& volume, const std::string& where) {
 }
 
 std::string EncodeVolumeBinary(const Volume& volume) {
-  std::string out;
-  out.append(kMagic, sizeof(kMagic));
-  Put(&out, kVersion);
-  Put(&out, uint32_t(volume.texels));
-  Put(&out, uint32_t(volume.branching));
-  Put(&out, uint32_t(volume.levels.size()));
-  Put(&out, uint32_t(volume.views.size()));
+  ByteWriter out;
+  out.Bytes(kMagic, sizeof(kMagic));
+  out.Le(kVersion);
+  out.Le(uint32_t(volume.texels));
+  out.Le(uint32_t(volume.branching));
+  out.Le(uint32_t(volume.levels.size()));
+  out.Le(uint32_t(volume.views.size()));
   for (const VolumeLevel& level : volume.levels) {
-    Put(&out, uint32_t(level.resolution));
-    Put(&out, uint64_t(level.cells.size()));
-    Put(&out, uint64_t(level.billboards.size()));
-    Put(&out, uint64_t(level.billboards_before_pruning));
+    out.Le(uint32_t(level.resolution));
+    out.Le(uint64_t(level.cells.size()));
+    out.Le(uint64_t(level.billboards.size()));
+    out.Le(uint64_t(level.billboards_before_pruning));
   }
   for (const VolumeLevel& level : volume.levels) {
-    for (const auto& c : level.cells) PutArray(&out, c.data(), 3);
-    PutArray(&out, level.density.data(), level.density.size());
+    for (const auto& c : level.cells) out.Array<uint16_t>(c);
+    out.Array<float>(level.density);
     for (const Billboard& b : level.billboards) {
-      Put(&out, b.cell);
-      Put(&out, b.view);
+      out.Le(b.cell);
+      out.Le(b.view);
     }
-    PutArray(&out, level.texels.data(), level.texels.size());
+    out.Array<uint8_t>(level.texels);
   }
-  Put(&out, Fnv1a64(out.data(), out.size()));
-  return out;
+  out.Le(Crc32(out.bytes().data(), out.bytes().size()));
+  return out.Take();
 }
 
 nlohmann::json VolumeJson(const Volume& volume, const nlohmann::json& provenance) {
@@ -226,8 +181,7 @@ Volume ReadVolume(const fs::path& folder) {
   Volume volume;
   try {
     if (doc.value("format", "") != "voltree-volume") Fail(json_file, ": field 'format' must be \"voltree-volume\"");
-    if (doc.at("version").get<int>() != int(kVersion))
-      Fail(json_file, ": unsupported version ", doc.at("version").dump(), ", expected ", kVersion);
+    if (const int version = doc.at("version").get<int>(); version != int(kVersion)) UnsupportedVersion(json_file, version);
     volume.origin = VecFrom(doc.at("origin"), json_file, "origin");
     volume.size = doc.at("size").get<double>();
     volume.branching = doc.at("branching").get<int>();
@@ -247,20 +201,19 @@ Volume ReadVolume(const fs::path& folder) {
   const std::string bytes = ReadFile(bin_path);
   if (bytes.size() < sizeof(kMagic) + 8) Fail(bin_file, ": too short (", bytes.size(), " bytes) to be a volume");
   if (std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) Fail(bin_file, ": bad magic, expected \"VTVOLBIN\"");
-  const size_t payload = bytes.size() - sizeof(uint64_t);
-  uint64_t stored_checksum;
-  std::memcpy(&stored_checksum, bytes.data() + payload, sizeof(uint64_t));
-  if (stored_checksum != Fnv1a64(bytes.data(), payload)) Fail(bin_file, ": checksum mismatch (file is corrupt)");
+  // The version before the checksum: an older file has another checksum and deserves the better message.
+  const std::string_view payload = std::string_view(bytes).substr(0, bytes.size() - sizeof(uint32_t));
+  ByteReader in(payload, bin_file);
+  in.Take(sizeof(kMagic), "the magic");
+  if (const uint32_t version = in.U32("the version"); version != kVersion) UnsupportedVersion(bin_file, version);
+  ByteReader checksum(std::string_view(bytes).substr(payload.size()), bin_file);
+  if (checksum.U32("the checksum") != Crc32(payload.data(), payload.size()))
+    Fail(bin_file, ": checksum mismatch (file is corrupt)");
 
-  Reader in(bytes, payload, bin_file);
-  char magic[8];
-  in.GetArray(magic, 8, "the magic");
-  const uint32_t version = in.Get<uint32_t>("the version");
-  if (version != kVersion) Fail(bin_file, ": unsupported version ", version, ", expected ", kVersion);
-  const uint32_t texels = in.Get<uint32_t>("texels");
-  const uint32_t branching = in.Get<uint32_t>("branching");
-  const uint32_t level_count = in.Get<uint32_t>("the level count");
-  const uint32_t view_count = in.Get<uint32_t>("the view count");
+  const uint32_t texels = in.U32("texels");
+  const uint32_t branching = in.U32("branching");
+  const uint32_t level_count = in.U32("the level count");
+  const uint32_t view_count = in.U32("the view count");
   if (int(texels) != volume.texels || int(branching) != volume.branching || view_count != volume.views.size())
     Fail(bin_file, ": header (texels ", texels, ", branching ", branching, ", views ", view_count,
          ") disagrees with ", json_file, " (texels ", volume.texels, ", branching ", volume.branching, ", views ",
@@ -269,13 +222,12 @@ Volume ReadVolume(const fs::path& folder) {
   const size_t texel_bytes = volume.BytesPerBillboard();
   volume.levels.resize(level_count);
   for (VolumeLevel& level : volume.levels) {
-    level.resolution = int(in.Get<uint32_t>("a level resolution"));
-    const uint64_t cells = in.Get<uint64_t>("a level cell count");
-    const uint64_t billboards = in.Get<uint64_t>("a level billboard count");
-    level.billboards_before_pruning = in.Get<uint64_t>("a level billboard count before pruning");
+    level.resolution = int(in.U32("a level resolution"));
+    const uint64_t cells = in.U64("a level cell count");
+    const uint64_t billboards = in.U64("a level billboard count");
+    level.billboards_before_pruning = in.U64("a level billboard count before pruning");
     // Counts are checked against the bytes left before anything is allocated.
-    const uint64_t left = payload - in.position();
-    if (cells > left / 10 || billboards > left / (6 + texel_bytes))
+    if (cells > in.remaining() / 10 || billboards > in.remaining() / (6 + texel_bytes))
       Fail(bin_file, ": level counts (", cells, " cells, ", billboards, " billboards) exceed the file size");
     level.cells.resize(cells);
     level.density.resize(cells);
@@ -283,16 +235,15 @@ Volume ReadVolume(const fs::path& folder) {
     level.texels.resize(billboards * texel_bytes);
   }
   for (VolumeLevel& level : volume.levels) {
-    for (auto& c : level.cells) in.GetArray(c.data(), 3, "cell coordinates");
-    in.GetArray(level.density.data(), level.density.size(), "densities");
+    for (auto& c : level.cells) in.Array<uint16_t>(c, "cell coordinates");
+    in.Array<float>(level.density, "densities");
     for (Billboard& b : level.billboards) {
-      b.cell = in.Get<uint32_t>("a billboard cell");
-      b.view = in.Get<uint16_t>("a billboard view");
+      b.cell = in.U32("a billboard cell");
+      b.view = in.U16("a billboard view");
     }
-    in.GetArray(level.texels.data(), level.texels.size(), "texels");
+    in.Array<uint8_t>(level.texels, "texels");
   }
-  if (in.position() != payload)
-    Fail(bin_file, ": ", payload - in.position(), " unexpected bytes after the last level");
+  if (in.remaining() != 0) Fail(bin_file, ": ", in.remaining(), " unexpected bytes after the last level");
   CheckVolume(volume, bin_file);
   return volume;
 }

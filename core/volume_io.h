@@ -6,7 +6,8 @@
 //                before/after pruning, percent pruned) and the provenance (options used).
 //   volume.bin   little-endian binary:
 //                  char[8]  magic "VTVOLBIN"
-//                  uint32   version (1)
+//                  uint32   version (2; version 1 ended with FNV-1a 64 and is refused with a
+//                           message to reconstruct again)
 //                  uint32   texels n, uint32 branching, uint32 level count L, uint32 view count V
 //                  L x { uint32 resolution, uint64 cells, uint64 billboards,
 //                        uint64 billboards_before_pruning }
@@ -16,9 +17,10 @@
 //                    billboards x { uint32 cell, uint16 view }  sorted by (cell, view)
 //                    billboards x n*n*4 uint8  RGBA8 texels, sRGB, premultiplied alpha, row-major,
 //                                              texel (0,0) at the top-left seen from the view
-//                  uint64   FNV-1a 64 of every byte before it
-// ReadVolume checks the magic, version, every count against the bytes present, every index and
-// the checksum, and agrees the JSON with the binary; errors name the file and what was expected.
+//                  uint32   CRC-32 (core/crc32.h, as in .vtree) of every byte before it
+// ReadVolume checks the magic, the version (before the checksum), the checksum, every count
+// against the bytes present and every index, and agrees the JSON with the binary; errors name
+// the file and what was expected.
 #pragma once
 
 #include <filesystem>

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/byte_reader.h"
+#include "core/byte_writer.h"
 #include "core/crc32.h"
 #include "core/error.h"
 #include "core/files.h"
@@ -24,25 +26,6 @@ constexpr uint32_t kMaxLevels = 17;            // 2^16 cells per axis fit u16 co
 constexpr uint32_t kMaxAtlasSide = 16384;      // GL_MAX_TEXTURE_SIZE on every current driver
 
 // ---- writing ----
-
-class ByteWriter {
- public:
-  void Bytes(const void* data, size_t size) { out_.append(static_cast<const char*>(data), size); }
-  template <typename T>
-  void Le(T value) {  // little-endian, whatever the host
-    static_assert(std::is_integral_v<T>);
-    for (size_t i = 0; i < sizeof(T); ++i) out_.push_back(static_cast<char>((uint64_t(value) >> (8 * i)) & 0xFF));
-  }
-  void F32(float value) {
-    uint32_t bits;
-    std::memcpy(&bits, &value, 4);
-    Le(bits);
-  }
-  std::string& str() { return out_; }
-
- private:
-  std::string out_;
-};
 
 uint32_t ChunkCrc(std::string_view header_fields, std::string_view payload) {
   return Crc32(payload.data(), payload.size(), Crc32(header_fields.data(), header_fields.size()));
@@ -63,10 +46,10 @@ void AppendChunk(ByteWriter& file, const char (&tag)[5], const std::string& raw,
   header.Le<uint32_t>(encoding);
   header.Le<uint64_t>(stored.size());
   header.Le<uint64_t>(raw.size());
-  const uint32_t crc = ChunkCrc(header.str(), stored);
-  file.Bytes(header.str().data(), header.str().size());
+  const uint32_t crc = ChunkCrc(header.bytes(), stored);
+  file.Bytes(header.bytes());
   file.Le<uint32_t>(crc);
-  file.Bytes(stored.data(), stored.size());
+  file.Bytes(stored);
 }
 
 json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
@@ -102,7 +85,7 @@ std::string CellPayload(const VtreeLevel& level, uint32_t index) {
   for (const auto& cell : level.cells)
     for (uint16_t c : cell) out.Le(c);
   for (float d : level.density) out.F32(d);
-  return std::move(out.str());
+  return out.Take();
 }
 
 std::string BillboardPayload(const VtreeLevel& level, uint32_t index) {
@@ -116,7 +99,7 @@ std::string BillboardPayload(const VtreeLevel& level, uint32_t index) {
     out.Le(b.colour);
     out.Le(b.alpha);
   }
-  return std::move(out.str());
+  return out.Take();
 }
 
 std::string AtlasPayload(const VtreeAtlas& atlas) {
@@ -127,49 +110,10 @@ std::string AtlasPayload(const VtreeAtlas& atlas) {
   out.Le(atlas.tiles_per_row);
   out.Le(atlas.tile_count);
   out.Bytes(atlas.dxt5.data(), atlas.dxt5.size());
-  return std::move(out.str());
+  return out.Take();
 }
 
 // ---- reading ----
-
-// Reads little-endian values from a bounded span; every read is checked, every error says where.
-class ByteReader {
- public:
-  ByteReader(std::string_view bytes, std::string context) : bytes_(bytes), context_(std::move(context)) {}
-
-  template <typename T>
-  T Le(const char* what) {
-    Need(sizeof(T), what);
-    uint64_t value = 0;
-    for (size_t i = 0; i < sizeof(T); ++i) value |= uint64_t(uint8_t(bytes_[position_ + i])) << (8 * i);
-    position_ += sizeof(T);
-    return static_cast<T>(value);
-  }
-  float F32(const char* what) {
-    const uint32_t bits = Le<uint32_t>(what);
-    float value;
-    std::memcpy(&value, &bits, 4);
-    return value;
-  }
-  std::string_view Take(size_t size, const char* what) {
-    Need(size, what);
-    const auto view = bytes_.substr(position_, size);
-    position_ += size;
-    return view;
-  }
-  size_t position() const { return position_; }
-  size_t remaining() const { return bytes_.size() - position_; }
-  [[noreturn]] void Fail(const std::string& message) const { voltree::Fail(context_, ": ", message); }
-
- private:
-  void Need(size_t size, const char* what) const {
-    if (size > remaining())
-      Fail(Str("truncated: ", what, " needs ", size, " bytes at byte ", position_, ", only ", remaining(), " left"));
-  }
-  std::string_view bytes_;
-  std::string context_;
-  size_t position_ = 0;
-};
 
 struct Chunk {
   std::string tag;
@@ -188,15 +132,15 @@ std::string TagText(std::string_view tag) {
 
 Chunk ReadChunkHeader(ByteReader& file) {
   Chunk chunk;
-  chunk.offset = file.position();
+  chunk.offset = file.offset();
   chunk.tag = std::string(file.Take(4, "chunk tag"));
   chunk.encoding = file.Le<uint32_t>("chunk encoding");
   chunk.stored_size = file.Le<uint64_t>("chunk size");
   chunk.raw_size = file.Le<uint64_t>("chunk raw size");
   chunk.crc = file.Le<uint32_t>("chunk checksum");
   if (chunk.stored_size > file.remaining())
-    file.Fail(Str("chunk ", TagText(chunk.tag), " at byte ", chunk.offset, ": truncated, its payload needs ",
-                  chunk.stored_size, " bytes but only ", file.remaining(), " remain"));
+    file.Fail("chunk ", TagText(chunk.tag), " at byte ", chunk.offset, ": truncated, its payload needs ",
+              chunk.stored_size, " bytes but only ", file.remaining(), " remain");
   chunk.stored = file.Take(chunk.stored_size, "chunk payload");
   return chunk;
 }
@@ -213,7 +157,7 @@ std::string Unpack(const Chunk& chunk, const std::string& name, const VtreeReadO
     header.Le(chunk.encoding);
     header.Le(chunk.stored_size);
     header.Le(chunk.raw_size);
-    if (ChunkCrc(header.str(), chunk.stored) != chunk.crc) Fail(context, ": checksum mismatch");
+    if (ChunkCrc(header.bytes(), chunk.stored) != chunk.crc) Fail(context, ": checksum mismatch");
   }
   if (chunk.raw_size > kVtreeMaxChunkBytes)
     Fail(context, ": raw size ", chunk.raw_size, " exceeds the limit of ", kVtreeMaxChunkBytes, " bytes");
@@ -317,29 +261,29 @@ VtreeLevel ParseCells(const std::string& payload, const std::string& context, ui
   ByteReader in(payload, context);
   VtreeLevel level;
   if (const auto stored = in.Le<uint32_t>("level index"); stored != index)
-    in.Fail(Str("level index ", stored, ", expected ", index));
+    in.Fail("level index ", stored, ", expected ", index);
   level.resolution = in.Le<uint32_t>("resolution");
   if (level.resolution != expected_resolution)
-    in.Fail(Str("resolution ", level.resolution, ", expected ", expected_resolution, " (branching^level)"));
+    in.Fail("resolution ", level.resolution, ", expected ", expected_resolution, " (branching^level)");
   const uint32_t count = in.Le<uint32_t>("cell count");
   if (in.remaining() / kCellBytes < count || in.remaining() != size_t(count) * kCellBytes)
-    in.Fail(Str("cell count ", count, " needs ", size_t(count) * kCellBytes, " bytes, the chunk has ",
-                in.remaining()));
+    in.Fail("cell count ", count, " needs ", size_t(count) * kCellBytes, " bytes, the chunk has ",
+            in.remaining());
   const uint64_t total_cells = uint64_t(level.resolution) * level.resolution * level.resolution;
-  if (count > total_cells) in.Fail(Str("cell count ", count, " exceeds ", total_cells, " cells of the grid"));
+  if (count > total_cells) in.Fail("cell count ", count, " exceeds ", total_cells, " cells of the grid");
   level.cells.resize(count);
   for (uint32_t i = 0; i < count; ++i) {
     for (auto& c : level.cells[i]) {
       c = in.Le<uint16_t>("cell coordinate");
       if (c >= level.resolution)
-        in.Fail(Str("cell ", i, " coordinate ", c, " out of range [0, ", level.resolution, ")"));
+        in.Fail("cell ", i, " coordinate ", c, " out of range [0, ", level.resolution, ")");
     }
   }
   level.density.resize(count);
   for (uint32_t i = 0; i < count; ++i) {
     level.density[i] = in.F32("density");
     if (!(level.density[i] >= 0) || !std::isfinite(level.density[i]))
-      in.Fail(Str("cell ", i, " density ", level.density[i], " is not finite and >= 0"));
+      in.Fail("cell ", i, " density ", level.density[i], " is not finite and >= 0");
   }
   return level;
 }
@@ -348,12 +292,12 @@ void ParseBillboards(const std::string& payload, const std::string& context, uin
                      const VtreeAsset& asset, VtreeLevel& level) {
   ByteReader in(payload, context);
   if (const auto stored = in.Le<uint32_t>("level index"); stored != index)
-    in.Fail(Str("level index ", stored, ", expected ", index));
+    in.Fail("level index ", stored, ", expected ", index);
   level.billboards_before_pruning = in.Le<uint64_t>("billboards before pruning");
   const uint32_t count = in.Le<uint32_t>("billboard count");
   if (in.remaining() / kBillboardBytes < count || in.remaining() != size_t(count) * kBillboardBytes)
-    in.Fail(Str("billboard count ", count, " needs ", size_t(count) * kBillboardBytes, " bytes, the chunk has ",
-                in.remaining()));
+    in.Fail("billboard count ", count, " needs ", size_t(count) * kBillboardBytes, " bytes, the chunk has ",
+            in.remaining());
   level.billboards.resize(count);
   for (uint32_t i = 0; i < count; ++i) {
     auto& b = level.billboards[i];
@@ -362,13 +306,13 @@ void ParseBillboards(const std::string& payload, const std::string& context, uin
     b.colour = in.Le<uint16_t>("billboard colour index");
     b.alpha = in.Le<uint16_t>("billboard alpha index");
     if (b.cell >= level.cells.size())
-      in.Fail(Str("billboard ", i, ": cell ", b.cell, " out of range [0, ", level.cells.size(), ")"));
+      in.Fail("billboard ", i, ": cell ", b.cell, " out of range [0, ", level.cells.size(), ")");
     if (b.view >= asset.views.size())
-      in.Fail(Str("billboard ", i, ": view ", b.view, " out of range [0, ", asset.views.size(), ")"));
+      in.Fail("billboard ", i, ": view ", b.view, " out of range [0, ", asset.views.size(), ")");
     if (b.colour >= asset.colour_codebook_size)
-      in.Fail(Str("billboard ", i, ": colour index ", b.colour, " out of range [0, ", asset.colour_codebook_size, ")"));
+      in.Fail("billboard ", i, ": colour index ", b.colour, " out of range [0, ", asset.colour_codebook_size, ")");
     if (b.alpha >= asset.alpha_codebook_size)
-      in.Fail(Str("billboard ", i, ": alpha index ", b.alpha, " out of range [0, ", asset.alpha_codebook_size, ")"));
+      in.Fail("billboard ", i, ": alpha index ", b.alpha, " out of range [0, ", asset.alpha_codebook_size, ")");
   }
 }
 
@@ -382,19 +326,19 @@ VtreeAtlas ParseAtlas(const std::string& payload, const std::string& context, co
   atlas.tile_count = in.Le<uint32_t>("tile count");
   if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
       atlas.width > kMaxAtlasSide || atlas.height > kMaxAtlasSide)
-    in.Fail(Str("atlas size ", atlas.width, "x", atlas.height, " is not a multiple of 4 in [4, ", kMaxAtlasSide, "]"));
+    in.Fail("atlas size ", atlas.width, "x", atlas.height, " is not a multiple of 4 in [4, ", kMaxAtlasSide, "]");
   const uint32_t pitch = (uint32_t(asset.texels) + 3) / 4 * 4;
-  if (atlas.tile_pitch != pitch) in.Fail(Str("tile pitch ", atlas.tile_pitch, ", expected ", pitch));
+  if (atlas.tile_pitch != pitch) in.Fail("tile pitch ", atlas.tile_pitch, ", expected ", pitch);
   if (atlas.tiles_per_row == 0 || uint64_t(atlas.tiles_per_row) * pitch > atlas.width)
-    in.Fail(Str("tiles per row ", atlas.tiles_per_row, " do not fit the atlas width ", atlas.width));
+    in.Fail("tiles per row ", atlas.tiles_per_row, " do not fit the atlas width ", atlas.width);
   const uint32_t needed = std::max(asset.colour_codebook_size, asset.alpha_codebook_size);
   if (atlas.tile_count < needed)
-    in.Fail(Str("tile count ", atlas.tile_count, " is less than the codebook size ", needed));
+    in.Fail("tile count ", atlas.tile_count, " is less than the codebook size ", needed);
   const uint64_t rows = (uint64_t(atlas.tile_count) + atlas.tiles_per_row - 1) / atlas.tiles_per_row;
-  if (rows * pitch > atlas.height) in.Fail(Str(atlas.tile_count, " tiles do not fit the atlas height ", atlas.height));
+  if (rows * pitch > atlas.height) in.Fail(atlas.tile_count, " tiles do not fit the atlas height ", atlas.height);
   const size_t bytes = size_t(atlas.width) * atlas.height;  // DXT5: 16 bytes per 16 texels
   if (in.remaining() != bytes)
-    in.Fail(Str("DXT5 data has ", in.remaining(), " bytes, expected ", bytes));
+    in.Fail("DXT5 data has ", in.remaining(), " bytes, expected ", bytes);
   const auto data = in.Take(bytes, "DXT5 data");
   atlas.dxt5.assign(data.begin(), data.end());
   return atlas;
@@ -431,7 +375,7 @@ std::string SerializeAsset(const VtreeAsset& asset, const VtreeWriteOptions& opt
     AppendChunk(file, "BBRD", BillboardPayload(asset.levels[i], i), options.zstd, options.zstd_level);
   }
   AppendChunk(file, "ATLS", AtlasPayload(asset.atlas), options.zstd, options.zstd_level);
-  return std::move(file.str());
+  return file.Take();
 }
 
 VtreeAsset ParseAsset(std::string_view bytes, const std::string& name, const VtreeReadOptions& options) {
@@ -444,7 +388,7 @@ VtreeAsset ParseAsset(std::string_view bytes, const std::string& name, const Vtr
     Fail(name, ": format version ", version, " is not supported (this build reads version ", kVtreeFormatVersion, ")");
 
   auto next = [&](const char* expected) {
-    if (file.remaining() == 0) Fail(name, ": truncated at byte ", file.position(), ": expected chunk ", expected);
+    if (file.remaining() == 0) Fail(name, ": truncated at byte ", file.offset(), ": expected chunk ", expected);
     Chunk chunk = ReadChunkHeader(file);
     if (chunk.tag != expected)
       Fail(ChunkContext(name, chunk), ": unexpected chunk, expected ", expected);
@@ -475,7 +419,7 @@ VtreeAsset ParseAsset(std::string_view bytes, const std::string& name, const Vtr
     const auto [chunk, payload] = next("ATLS");
     asset.atlas = ParseAtlas(payload, ChunkContext(name, chunk), asset);
   }
-  if (file.remaining() != 0) Fail(name, ": ", file.remaining(), " unexpected bytes after the last chunk at byte ", file.position());
+  if (file.remaining() != 0) Fail(name, ": ", file.remaining(), " unexpected bytes after the last chunk at byte ", file.offset());
   return asset;
 }
 

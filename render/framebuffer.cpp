@@ -48,42 +48,36 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, bool with_de
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   if (width <= 0 || height <= 0 || width > max_size || height > max_size)
     Fail("framebuffer size ", width, "x", height, " is outside 1..", max_size, " (the driver's limit)");
-  glCreateTextures(GL_TEXTURE_2D, 1, &color_);
-  glTextureStorage2D(color_, 1, InternalFormat(format), width, height);
-  glTextureParameteri(color_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(color_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glCreateFramebuffers(1, &framebuffer_);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
+  color_ = GlTextureName::Create();
+  glTextureStorage2D(color_.id(), 1, InternalFormat(format), width, height);
+  glTextureParameteri(color_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(color_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  framebuffer_ = GlFramebufferName::Create();
+  glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   if (with_depth) {
-    glCreateRenderbuffers(1, &depth_);
-    glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
-    glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    depth_ = GlRenderbufferName::Create();
+    glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, width, height);
+    glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   }
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     Fail("OpenGL: framebuffer ", width, "x", height, " is incomplete (status 0x", std::hex, status, ")");
   CheckGl("creating a framebuffer");
 }
 
-Framebuffer::~Framebuffer() {
-  glDeleteFramebuffers(1, &framebuffer_);
-  glDeleteTextures(1, &color_);
-  if (depth_ != 0) glDeleteRenderbuffers(1, &depth_);
-}
-
 void Framebuffer::Bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, width_, height_);
 }
 
 void Framebuffer::Clear(float r, float g, float b, float a, float depth) const {
   const float color[4] = {r, g, b, a};
-  glClearNamedFramebufferfv(framebuffer_, GL_COLOR, 0, color);
-  if (depth_ != 0) glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &depth);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, color);
+  if (depth_.id() != 0) glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &depth);
 }
 
-Image8 Framebuffer::ReadImage8() const { return ReadBack<uint8_t>(framebuffer_, width_, height_, GL_UNSIGNED_BYTE); }
+Image8 Framebuffer::ReadImage8() const { return ReadBack<uint8_t>(framebuffer_.id(), width_, height_, GL_UNSIGNED_BYTE); }
 
-ImageF Framebuffer::ReadImageF() const { return ReadBack<float>(framebuffer_, width_, height_, GL_FLOAT); }
+ImageF Framebuffer::ReadImageF() const { return ReadBack<float>(framebuffer_.id(), width_, height_, GL_FLOAT); }
 
 }  // namespace voltree

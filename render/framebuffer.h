@@ -4,6 +4,7 @@
 
 #include "core/image.h"
 #include "render/gl.h"
+#include "render/gl_objects.h"
 
 namespace voltree {
 
@@ -13,14 +14,13 @@ class Framebuffer {
  public:
   // Needs a current GL context. Throws Error when the driver rejects the size or format.
   Framebuffer(int width, int height, ColorFormat format, bool with_depth = true);
-  ~Framebuffer();
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
 
   int width() const { return width_; }
   int height() const { return height_; }
   ColorFormat format() const { return format_; }
-  GLuint color_texture() const { return color_; }
+  GLuint color_texture() const { return color_.id(); }
 
   // Binds for drawing and sets the viewport to the whole target.
   void Bind() const;
@@ -33,7 +33,10 @@ class Framebuffer {
  private:
   int width_, height_;
   ColorFormat format_;
-  GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;
+  // Declared so that the framebuffer is deleted before what is attached to it.
+  GlTextureName color_;
+  GlRenderbufferName depth_;  // none without depth
+  GlFramebufferName framebuffer_;
 };
 
 }  // namespace voltree

@@ -1,6 +1,10 @@
-// Owners for OpenGL object names (buffers, vertex arrays, textures): deleted once, movable.
+// Owners for OpenGL object names (buffers, vertex arrays, textures, framebuffers, renderbuffers):
+// each name is deleted once, by its owner, also when a constructor throws half way through.
+// Owners are movable, not copyable.
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <utility>
 
 #include "core/image.h"
@@ -8,14 +12,22 @@
 
 namespace voltree {
 
-class GlBuffer {
+// One object name, or none (0), made by `kCreate` and deleted by `kDelete` (glCreateBuffers and
+// glDeleteBuffers, ...).
+template <void (*kCreate)(GLsizei, GLuint*), void (*kDelete)(GLsizei, const GLuint*)>
+class GlName {
  public:
-  GlBuffer() = default;
-  // Immutable storage filled with `bytes` bytes from `data`.
-  GlBuffer(const void* data, size_t bytes);
-  ~GlBuffer() { if (id_ != 0) glDeleteBuffers(1, &id_); }
-  GlBuffer(GlBuffer&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
-  GlBuffer& operator=(GlBuffer&& other) noexcept {
+  GlName() = default;
+  static GlName Create() {
+    GlName name;
+    kCreate(1, &name.id_);
+    return name;
+  }
+  ~GlName() {
+    if (id_ != 0) kDelete(1, &id_);
+  }
+  GlName(GlName&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+  GlName& operator=(GlName&& other) noexcept {
     std::swap(id_, other.id_);
     return *this;
   }
@@ -25,20 +37,48 @@ class GlBuffer {
   GLuint id_ = 0;
 };
 
-class GlVertexArray {
+inline void CreateTextures2d(GLsizei count, GLuint* ids) { glCreateTextures(GL_TEXTURE_2D, count, ids); }
+
+using GlBufferName = GlName<glCreateBuffers, glDeleteBuffers>;
+using GlVertexArrayName = GlName<glCreateVertexArrays, glDeleteVertexArrays>;
+using GlTextureName = GlName<CreateTextures2d, glDeleteTextures>;
+using GlFramebufferName = GlName<glCreateFramebuffers, glDeleteFramebuffers>;
+using GlRenderbufferName = GlName<glCreateRenderbuffers, glDeleteRenderbuffers>;
+
+class GlBuffer {
  public:
-  GlVertexArray() { glCreateVertexArrays(1, &id_); }
-  ~GlVertexArray() { if (id_ != 0) glDeleteVertexArrays(1, &id_); }
-  GlVertexArray(GlVertexArray&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
-  GlVertexArray& operator=(GlVertexArray&& other) noexcept {
-    std::swap(id_, other.id_);
-    return *this;
-  }
-  GLuint id() const { return id_; }
-  void Bind() const { glBindVertexArray(id_); }
+  GlBuffer() = default;
+  // Immutable storage of max(bytes, min_bytes, 1) bytes, the first `bytes` from `data`, the rest 0.
+  GlBuffer(const void* data, size_t bytes, size_t min_bytes = 1);
+  GLuint id() const { return name_.id(); }
+  size_t bytes() const { return bytes_; }  // allocated on the GPU
 
  private:
-  GLuint id_ = 0;
+  GlBufferName name_;
+  size_t bytes_ = 0;
+};
+
+// A buffer rewritten every frame (GL_STREAM_DRAW). It grows, at least doubling, when a frame needs
+// more and never shrinks, so frames and instances reuse it.
+class GlStreamBuffer {
+ public:
+  void Upload(const void* data, size_t bytes);
+  GLuint id() const { return name_.id(); }
+  size_t capacity() const { return capacity_; }
+
+ private:
+  GlBufferName name_;
+  size_t capacity_ = 0;
+};
+
+class GlVertexArray {
+ public:
+  GlVertexArray() : name_(GlVertexArrayName::Create()) {}
+  GLuint id() const { return name_.id(); }
+  void Bind() const { glBindVertexArray(name_.id()); }
+
+ private:
+  GlVertexArrayName name_;
 };
 
 struct TextureOptions {
@@ -52,17 +92,14 @@ class GlTexture {
   GlTexture() = default;
   // Uploads a 1-4 channel 8-bit image (top row at t = 0, as image files are stored).
   GlTexture(const Image8& image, const TextureOptions& options);
-  ~GlTexture() { if (id_ != 0) glDeleteTextures(1, &id_); }
-  GlTexture(GlTexture&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
-  GlTexture& operator=(GlTexture&& other) noexcept {
-    std::swap(id_, other.id_);
-    return *this;
-  }
-  GLuint id() const { return id_; }
-  void Bind(int unit) const { glBindTextureUnit(static_cast<GLuint>(unit), id_); }
+  // DXT5 blocks of a width x height image, linear filtering, clamped, no mipmaps. `what` names the
+  // texture in errors.
+  static GlTexture Dxt5(int width, int height, std::span<const uint8_t> blocks, const char* what);
+  GLuint id() const { return name_.id(); }
+  void Bind(int unit) const { glBindTextureUnit(static_cast<GLuint>(unit), name_.id()); }
 
  private:
-  GLuint id_ = 0;
+  GlTextureName name_;
 };
 
 }  // namespace voltree

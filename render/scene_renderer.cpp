@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
+#include "render/offscreen_render.h"
 
 namespace voltree {
 namespace {
@@ -114,12 +115,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, const std::vector<VtreeAsset>& 
   lod_states_.resize(scene.instances.size());
   ground_program_ = ShaderProgram::Graphics("scene ground", std::string("#version 430 core\n") + kProjectionGlsl + kGroundMain,
                                             kGroundFragment);
-  glCreateVertexArrays(1, &ground_vertex_array_);
   CheckGl("render: creating the scene's ground");
-}
-
-SceneRenderer::~SceneRenderer() {
-  if (ground_vertex_array_) glDeleteVertexArrays(1, &ground_vertex_array_);
 }
 
 std::vector<Sphere> SceneRenderer::InstanceSpheres(double billboard_scale) const {
@@ -171,7 +167,7 @@ void SceneRenderer::DrawGround(const View& view, const DepthRange& depth) const 
   ground_program_.Set("uColour", Eigen::Vector3f(ground.colour[0] / 255.0f, ground.colour[1] / 255.0f,
                                                  ground.colour[2] / 255.0f));
   ground_program_.Use();
-  glBindVertexArray(ground_vertex_array_);
+  ground_vertex_array_.Bind();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -211,15 +207,10 @@ SceneFrameStats SceneRenderer::Draw(const View& view, const SceneRenderOptions& 
 }
 
 Image8 SceneRenderer::Render(const View& view, const SceneRenderOptions& options, SceneFrameStats* stats) {
-  view.camera.Check();
-  if (!target_ || target_->width() != view.camera.width || target_->height() != view.camera.height)
-    target_ = std::make_unique<Framebuffer>(view.camera.width, view.camera.height, ColorFormat::kRGBA8);
-  target_->Bind();
-  const auto& bg = options.tree.background;
-  target_->Clear(bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]);  // premultiplied, like the blend
-  const SceneFrameStats frame = Draw(view, options);
-  if (stats) *stats = frame;
-  return Unpremultiply(target_->ReadImage8());
+  return RenderOffscreen(target_, view.camera, options.tree.background, [&] {
+    const SceneFrameStats frame = Draw(view, options);
+    if (stats) *stats = frame;
+  });
 }
 
 }  // namespace voltree

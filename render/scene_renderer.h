@@ -17,6 +17,7 @@
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/frustum.h"
+#include "render/gl_objects.h"
 #include "render/orbit.h"
 #include "render/projection.h"
 #include "render/scene.h"
@@ -53,7 +54,6 @@ class SceneRenderer {
  public:
   // `assets` in Scene::assets order (ReadSceneAssets). Needs a current GL context.
   SceneRenderer(const Scene& scene, const std::vector<VtreeAsset>& assets);
-  ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;
 
@@ -78,7 +78,7 @@ class SceneRenderer {
   std::vector<std::unique_ptr<TreeRenderer>> renderers_;  // per asset
   std::vector<std::vector<uint8_t>> lod_states_;          // per instance
   ShaderProgram ground_program_;
-  unsigned ground_vertex_array_ = 0;
+  GlVertexArray ground_vertex_array_;  // empty: the ground comes from gl_VertexID
   std::unique_ptr<Framebuffer> target_;
 };
 

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
+#include "render/offscreen_render.h"
 
 namespace voltree {
 namespace {
@@ -106,15 +107,6 @@ void main() {
 using Clock = std::chrono::steady_clock;
 double Ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
-unsigned MakeStorage(const void* data, size_t bytes) {
-  GLuint id = 0;
-  glCreateBuffers(1, &id);
-  glNamedBufferStorage(id, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  if (bytes > 0) glNamedBufferSubData(id, 0, GLsizeiptr(bytes), data);
-  CheckGl("render: uploading a storage buffer");
-  return id;
-}
-
 // The billboard frame of an input view as the reconstruction built it: right = dir x up.
 struct BillboardFrame {
   Eigen::Vector3f direction, right, up;
@@ -160,25 +152,17 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
       Fail("render: billboard ", b, " names a tile beyond the atlas's ", asset.atlas.tile_count);
     billboards[b] = uint32_t(record.colour) | (uint32_t(record.alpha) << 16);
   }
-  cells_buffer_ = MakeStorage(cells.data(), cells.size() * sizeof(float));
-  billboards_buffer_ = MakeStorage(billboards.data(), billboards.size() * sizeof(uint32_t));
-  static_buffer_bytes_ = std::max<size_t>(cells.size() * sizeof(float), 16) + std::max<size_t>(billboards.size() * 4, 16);
-  atlas_bytes_ = asset.atlas.dxt5.size();
+  // At least 16 bytes each: a shader storage block is never bound empty.
+  cells_ = GlBuffer(cells.data(), cells.size() * sizeof(float), 16);
+  billboards_ = GlBuffer(billboards.data(), billboards.size() * sizeof(uint32_t), 16);
 
   const VtreeAtlas& atlas = asset.atlas;
   if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
       atlas.dxt5.size() != size_t(atlas.width) * atlas.height)
     Fail("render: bad atlas ", atlas.width, "x", atlas.height, " with ", atlas.dxt5.size(), " bytes");
-  glCreateTextures(GL_TEXTURE_2D, 1, &atlas_);
-  glTextureStorage2D(atlas_, 1, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GLsizei(atlas.width), GLsizei(atlas.height));
-  glCompressedTextureSubImage2D(atlas_, 0, 0, 0, GLsizei(atlas.width), GLsizei(atlas.height),
-                                GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GLsizei(atlas.dxt5.size()), atlas.dxt5.data());
-  glTextureParameteri(atlas_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(atlas_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(atlas_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(atlas_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  CheckGl("render: uploading the DXT5 atlas (needs GL_EXT_texture_compression_s3tc)");
-  glCreateVertexArrays(1, &vertex_array_);
+  atlas_ = GlTexture::Dxt5(int(atlas.width), int(atlas.height), atlas.dxt5,
+                           "render: uploading the DXT5 atlas (needs GL_EXT_texture_compression_s3tc)");
+  atlas_bytes_ = atlas.dxt5.size();
 
   program_.Set("uAtlas", 0);
   program_.Set("uTexels", asset.texels);
@@ -195,13 +179,8 @@ double TreeRenderer::BoundingRadius(double billboard_scale) const {
   return root_size_ * std::max(0.5 * std::sqrt(3.0), 0.5 * std::sqrt(2.0) * billboard_scale);
 }
 
-GpuMemory TreeRenderer::GpuBytes() const { return {static_buffer_bytes_ + frame_buffer_bytes_, atlas_bytes_}; }
-
-TreeRenderer::~TreeRenderer() {
-  const GLuint buffers[] = {cells_buffer_, billboards_buffer_, frame_buffer_};
-  glDeleteBuffers(3, buffers);
-  if (atlas_) glDeleteTextures(1, &atlas_);
-  if (vertex_array_) glDeleteVertexArrays(1, &vertex_array_);
+GpuMemory TreeRenderer::GpuBytes() const {
+  return {cells_.bytes() + billboards_.bytes() + records_.capacity(), atlas_bytes_};
 }
 
 FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options,
@@ -242,14 +221,7 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
   stats.traversal_ms = Ms(start, Clock::now());
 
   if (!records.empty()) {
-    const size_t bytes = records.size() * sizeof(records[0]);
-    if (bytes > frame_buffer_bytes_) {  // grows only; reused between frames and instances
-      if (frame_buffer_) glDeleteBuffers(1, &frame_buffer_);
-      frame_buffer_bytes_ = std::max(bytes, 2 * frame_buffer_bytes_);
-      glCreateBuffers(1, &frame_buffer_);
-      glNamedBufferData(frame_buffer_, GLsizeiptr(frame_buffer_bytes_), nullptr, GL_STREAM_DRAW);
-    }
-    glNamedBufferSubData(frame_buffer_, 0, GLsizeiptr(bytes), records.data());
+    records_.Upload(records.data(), records.size() * sizeof(records[0]));
 
     const Eigen::Vector3d eye = camera.pose.Center();
     const Eigen::Vector3d world_centre = draw.model.ToWorld(centre_);
@@ -277,11 +249,11 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     glProgramUniform1fv(program_.id(), program_.Location("uWeight"), 2, weights);
 
     program_.Use();
-    glBindVertexArray(vertex_array_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_buffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, billboards_buffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, frame_buffer_);
-    glBindTextureUnit(0, atlas_);
+    vertex_array_.Bind();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, billboards_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, records_.id());
+    atlas_.Bind(0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
@@ -300,26 +272,10 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
 }
 
 Image8 TreeRenderer::Render(const View& camera, const TreeRenderOptions& options, FrameStats* stats) {
-  camera.camera.Check();
-  if (!target_ || target_->width() != camera.camera.width || target_->height() != camera.camera.height)
-    target_ = std::make_unique<Framebuffer>(camera.camera.width, camera.camera.height, ColorFormat::kRGBA8);
-  target_->Bind();
-  const auto& bg = options.background;
-  target_->Clear(bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]);  // premultiplied, like the blend
-  const FrameStats frame = Draw(camera, options);
-  if (stats) *stats = frame;
-  return Unpremultiply(target_->ReadImage8());
-}
-
-Image8 Unpremultiply(const Image8& premultiplied) {
-  if (premultiplied.channels != 4) Fail("unpremultiply: expected RGBA, got ", premultiplied.channels, " channels");
-  Image8 out = premultiplied;
-  for (size_t i = 0; i < out.pixels.size(); i += 4) {
-    const int a = out.pixels[i + 3];
-    for (int c = 0; c < 3; ++c)
-      out.pixels[i + c] = a == 0 ? 0 : uint8_t(std::min(255, (int(out.pixels[i + c]) * 255 + a / 2) / a));
-  }
-  return out;
+  return RenderOffscreen(target_, camera.camera, options.background, [&] {
+    const FrameStats frame = Draw(camera, options);
+    if (stats) *stats = frame;
+  });
 }
 
 }  // namespace voltree

@@ -36,8 +36,10 @@
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/framebuffer.h"
+#include "render/gl_objects.h"
 #include "render/instance_transform.h"
 #include "render/lod.h"
+#include "render/offscreen_render.h"
 #include "render/projection.h"
 #include "render/shader.h"
 #include "render/traversal.h"
@@ -84,7 +86,6 @@ class TreeRenderer {
  public:
   // Needs a current GL context (4.3+). Throws Error when the atlas or buffers cannot be made.
   explicit TreeRenderer(const VtreeAsset& asset);
-  ~TreeRenderer();
   TreeRenderer(const TreeRenderer&) = delete;
   TreeRenderer& operator=(const TreeRenderer&) = delete;
 
@@ -112,15 +113,15 @@ class TreeRenderer {
   OctreeIndex index_;
   Eigen::Vector3d centre_;
   double root_size_;
-  size_t atlas_bytes_ = 0, static_buffer_bytes_ = 0;
+  size_t atlas_bytes_ = 0;
   ShaderProgram program_;
-  unsigned cells_buffer_ = 0, billboards_buffer_ = 0, frame_buffer_ = 0, atlas_ = 0, vertex_array_ = 0;
-  size_t frame_buffer_bytes_ = 0;
+  GlBuffer cells_;          // centre, side per cell (vec4)
+  GlBuffer billboards_;     // colour | alpha << 16 per billboard
+  GlStreamBuffer records_;  // the frame's (cell, billboard A, billboard B, 0)
+  GlTexture atlas_;         // DXT5
+  GlVertexArray vertex_array_;
   std::vector<uint8_t> lod_state_;  // per cell: refined in the previous frame
   std::unique_ptr<Framebuffer> target_;
 };
-
-// Straight alpha from premultiplied RGBA8 (rounded; colour 0 where alpha is 0).
-Image8 Unpremultiply(const Image8& premultiplied);
 
 }  // namespace voltree

@@ -72,12 +72,7 @@ TEST(Dxt5, GlDriverDecodesLikeTheReference) {
   auto blocks = RandomBlocks(size_t(w / 4) * (h / 4), 3);
   const auto encoded = EncodeDxt5(SmoothImage(w, h / 2, 4).data(), w, h / 2);
   std::copy(encoded.begin(), encoded.end(), blocks.begin());  // half random, half real encodings
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, w, h);
-  glCompressedTextureSubImage2D(texture, 0, 0, 0, w, h, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GLsizei(blocks.size()),
-                                blocks.data());
-  CheckGl("upload DXT5");
+  const GlTexture texture = GlTexture::Dxt5(w, h, blocks, "upload DXT5");
   const ShaderProgram program = ShaderProgram::Graphics("dxt5 fetch",
       "#version 430 core\n"
       "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(2 * p - 1, 0, 1); }\n",
@@ -88,7 +83,7 @@ TEST(Dxt5, GlDriverDecodesLikeTheReference) {
   Framebuffer target(w, h, ColorFormat::kRGBA8, false);
   target.Bind();
   program.Use();
-  glBindTextureUnit(0, texture);
+  texture.Bind(0);
   GlVertexArray vao;
   vao.Bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -96,7 +91,6 @@ TEST(Dxt5, GlDriverDecodesLikeTheReference) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, driver.data());  // row 0 = texel row 0
   CheckGl("read back");
-  glDeleteTextures(1, &texture);
   // llvmpipe's alpha rounding is modelled exactly; other drivers may round alpha differently
   // (the specification defines real values), so they are allowed +-1 on alpha only.
   const bool llvmpipe = context->renderer().find("llvmpipe") != std::string::npos;

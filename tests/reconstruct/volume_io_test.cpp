@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "core/crc32.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/volume_io.h"
@@ -101,21 +102,68 @@ TEST(VolumeIo, DetectsCorruptionAndNamesTheFile) {
   EXPECT_NE(ErrorOf(folder).find("volume.json: not valid JSON"), std::string::npos) << ErrorOf(folder);
 }
 
+// `bytes` without its checksum, re-checksummed as volume.bin is.
+std::string WithCrc(std::string bytes) {
+  const uint32_t crc = Crc32(bytes.data(), bytes.size());
+  for (int i = 0; i < 4; ++i) bytes.push_back(char((crc >> (8 * i)) & 0xFF));
+  return bytes;
+}
+
 TEST(VolumeIo, ChecksCountsEvenWithAValidChecksum) {
   // A level count that promises more cells than the file holds, re-checksummed.
   Volume volume = SmallVolume();
   std::string bytes = EncodeVolumeBinary(volume);
-  bytes.resize(bytes.size() - 8);
+  bytes.resize(bytes.size() - 4);
   const size_t cells_field = 8 + 4 * 5 + 4;  // magic, header, level 0 resolution
-  const uint64_t huge = uint64_t(1) << 40;
-  std::memcpy(bytes.data() + cells_field, &huge, 8);
-  uint64_t hash = 1469598103934665603ull;
-  for (char c : bytes) hash = (hash ^ uint8_t(c)) * 1099511628211ull;
-  bytes.append(reinterpret_cast<const char*>(&hash), 8);
+  for (int i = 0; i < 8; ++i) bytes[cells_field + i] = char(i == 5 ? 1 : 0);  // 2^40, little-endian
   testing::TempDir dir("io_counts");
   WriteVolume(dir.path / "volume", volume);
-  WriteFileAtomic(dir.path / "volume" / kVolumeBinName, bytes);
+  WriteFileAtomic(dir.path / "volume" / kVolumeBinName, WithCrc(bytes));
   EXPECT_NE(ErrorOf(dir.path / "volume").find("exceed the file size"), std::string::npos) << ErrorOf(dir.path / "volume");
+}
+
+TEST(VolumeIo, EndsWithTheCrc32OfEverythingBefore) {
+  const std::string bytes = EncodeVolumeBinary(SmallVolume());
+  EXPECT_EQ(bytes, WithCrc(bytes.substr(0, bytes.size() - 4)));
+  EXPECT_EQ(bytes.substr(8, 4), std::string("\x02\0\0\0", 4));  // version 2, little-endian
+}
+
+// A volume as version 1 wrote it: version 1 in both files, FNV-1a 64 at the end of volume.bin.
+void WriteVersion1(const fs::path& folder) {
+  WriteVolume(folder, SmallVolume());
+  std::string json = ReadFile(folder / kVolumeJsonName);
+  const size_t version = json.find("\"version\": 2");
+  ASSERT_NE(version, std::string::npos) << json;
+  json.replace(version, 12, "\"version\": 1");
+  WriteFileAtomic(folder / kVolumeJsonName, json);
+  std::string bytes = EncodeVolumeBinary(SmallVolume());
+  bytes.resize(bytes.size() - 4);
+  bytes[8] = 1;
+  uint64_t hash = 1469598103934665603ull;
+  for (char c : bytes) hash = (hash ^ uint8_t(c)) * 1099511628211ull;
+  for (int i = 0; i < 8; ++i) bytes.push_back(char((hash >> (8 * i)) & 0xFF));
+  WriteFileAtomic(folder / kVolumeBinName, bytes);
+}
+
+TEST(VolumeIo, AnOlderVersionAsksToReconstructAgain) {
+  testing::TempDir dir("io_version");
+  const fs::path folder = dir.path / "volume";
+  WriteVersion1(folder);
+  const std::string message = ErrorOf(folder);
+  EXPECT_NE(message.find("volume.json: volume version 1 was written by an older voltree; run 'voltree reconstruct' "
+                         "again"), std::string::npos) << message;
+
+  // volume.bin alone of version 1 says the same, not that its checksum is wrong.
+  WriteFileAtomic(folder / kVolumeJsonName, VolumeJson(SmallVolume(), {}).dump(2));
+  const std::string bin_message = ErrorOf(folder);
+  EXPECT_NE(bin_message.find("volume.bin: volume version 1 was written by an older voltree"), std::string::npos)
+      << bin_message;
+
+  // A version from the future is not blamed on an older voltree.
+  std::string bytes = EncodeVolumeBinary(SmallVolume());
+  bytes[8] = 3;
+  WriteFileAtomic(folder / kVolumeBinName, bytes);
+  EXPECT_NE(ErrorOf(folder).find("volume.bin: unsupported volume version 3"), std::string::npos) << ErrorOf(folder);
 }
 
 }  // namespace
