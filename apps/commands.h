@@ -16,5 +16,6 @@ void AddInfoCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddEvalCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
+void AddWebCommand(CLI::App& app);
 
 }  // namespace voltree::app

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   voltree::app::AddRenderCommand(app);
   voltree::app::AddEvalCommand(app);
   voltree::app::AddRunCommand(app);
+  voltree::app::AddWebCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
