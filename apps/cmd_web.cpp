@@ -19,6 +19,8 @@ void AddWebCommand(CLI::App& app) {
   auto options = std::make_shared<WebPageOptions>();
   command->add_option("ASSET", options->input, "A .vtree asset, or a scene .json (see samples/scenes/README.md)")
       ->required();
+  command->add_option("--assets", options->asset_folder,
+                      "Scenes: folder to look their assets up in (default: the scene's folder)");
   command->add_option("-o,--output", options->output, "Output folder (built aside, renamed into place)")->required();
   command->add_flag("--force", options->force, "Replace an existing output folder");
   command->callback([options] {

@@ -10,6 +10,7 @@ packages=(
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libsquish-dev libcli11-dev nlohmann-json3-dev libtbb-dev libzstd-dev
   libtinygltf-dev libtinyobjloader-dev gnuplot-nox ffmpeg
+  chromium  # the web page's tests: WebGL2 in headless Chromium on SwiftShader
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -29,7 +29,7 @@ json PageData(const WebPageOptions& options, WebPageResult* result) {
     data["single"] = true;
     data["instances"].push_back({{"asset", 0}, {"position", {0, 0, 0}}, {"rotation", 0}, {"scale", 1}});
   } else {
-    const Scene scene = LoadScene(options.input);  // names the missing assets
+    const Scene scene = LoadScene(options.input, {options.asset_folder});  // names the missing assets
     const std::vector<VtreeAsset> assets = ReadSceneAssets(scene);
     for (size_t i = 0; i < assets.size(); ++i) add_asset(scene.assets[i].path, assets[i]);
     data["single"] = false;
@@ -55,6 +55,7 @@ void WebPageOptions::Check() const {
   if (input.empty()) Fail("web: an asset (.vtree) or a scene (.json) is required");
   if (output.empty()) Fail("web: an output folder (-o DIR) is required");
   if (!std::filesystem::is_regular_file(input)) Fail(input.string(), ": file not found");
+  if (!asset_folder.empty() && !IsSceneFile(input)) Fail("web: --assets applies to a scene (.json), not to ", input.string());
 }
 
 WebPageResult WriteWebPage(const WebPageOptions& options) {

@@ -827,6 +827,7 @@ function ShowError(message) {
   const box = document.getElementById("error");
   box.textContent = `voltree: ${message}`;
   box.hidden = false;
+  document.getElementById("stats").hidden = true;
   document.title = "voltree: error";
 }
 
@@ -863,7 +864,8 @@ function Main() {
     const views = frame.views && scene.single ? ` · views ${frame.views.first}+${frame.views.second} (${frame.views.firstWeight.toFixed(2)}/${frame.views.secondWeight.toFixed(2)})` : "";
     const instances = scene.single ? "" : ` · instances ${frame.drawn} drawn, ${frame.culled} culled`;
     const gpu = scene.renderers.reduce((sum, r) => sum + r.gpuBytes, 0);
-    stats.textContent = `${VOLTREE_DATA.name} · ${cam.width}×${cam.height} · ${ms.toFixed(1)} ms (${(1000 / ms).toFixed(0)} fps)` +
+    const time = ms > 0 ? `${ms.toFixed(1)} ms (${(1000 / ms).toFixed(0)} fps)` : "time not measured";  // virtual time
+    stats.textContent = `${VOLTREE_DATA.name} · ${cam.width}×${cam.height} · ${time}` +
       ` · cells ${frame.cells} · billboards ${frame.billboards} · levels ${frame.minLevel}–${frame.maxLevel}${views}${instances}` +
       ` · atlas ${(gpu / 1024).toFixed(0)} KiB ${s3tc ? "S3TC" : "RGBA8 (DXT5 decoded)"} · data ${(scene.bytes / 1024).toFixed(0)} KiB`;
   };
@@ -887,7 +889,8 @@ function Main() {
     times.sort((a, b) => a - b);
     const median = bench % 2 ? times[(bench - 1) / 2] : 0.5 * (times[bench / 2 - 1] + times[bench / 2]);
     const load = performance.now();
-    document.getElementById("bench").textContent = JSON.stringify({ frames: bench, median_ms: median, load_ms: load, s3tc: !!s3tc });
+    document.getElementById("bench").textContent =
+      JSON.stringify({ frames: bench, width: canvas.width, height: canvas.height, median_ms: median, load_ms: load, s3tc: !!s3tc });
     return;
   }
 
