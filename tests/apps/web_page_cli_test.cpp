@@ -2,7 +2,8 @@
 // is written as a page, opened from disk by headless Chromium (WebGL2 on SwiftShader) with a
 // COLMAP camera in the URL, and its screenshot compared with `voltree render` from the same
 // camera over the same grey: RGB PSNR >= 35 dB. Two cameras, the page's DXT5 decoder, a scene of
-// three instances on a ground, and the page's errors (corrupt asset, unknown format version).
+// three instances on a ground, the frame `voltree eval` embeds in its report, and the page's
+// errors (corrupt asset, unknown format version).
 // Each check has a control that must fail it (the other camera's render, a blank grey image).
 // About 40 s, most of it Chromium starting.
 #include <gtest/gtest.h>
@@ -32,11 +33,12 @@ constexpr double kMinPsnr = 35;
 
 // The flags that give headless Chromium WebGL2 without a GPU: ANGLE on SwiftShader (software
 // Vulkan), which the browser only enables for WebGL when told that software is acceptable.
-std::string Chromium(const fs::path& profile, const std::string& action, const std::string& url) {
+// (Headless Chromium makes a temporary profile of its own for each run.)
+std::string Chromium(const std::string& action, const std::string& url, int width = kWidth, int height = kHeight) {
   return "timeout 120 chromium --headless=new --no-sandbox --disable-gpu --use-angle=swiftshader "
-         "--enable-unsafe-swiftshader --force-device-scale-factor=1 --hide-scrollbars --user-data-dir='" +
-         profile.string() + "' --window-size=" + std::to_string(kWidth) + "," + std::to_string(kHeight) +
-         " --virtual-time-budget=10000 " + action + " '" + url + "' 2>/dev/null";
+         "--enable-unsafe-swiftshader --force-device-scale-factor=1 --hide-scrollbars --window-size=" +
+         std::to_string(width) + "," + std::to_string(height) + " --virtual-time-budget=10000 " + action + " '" + url +
+         "' 2>/dev/null";
 }
 
 std::string Capture(const std::string& command) {
@@ -120,7 +122,7 @@ class WebPage : public ::testing::Test {
 
   static Image8 Screenshot(const fs::path& page, const std::string& query, const std::string& name) {
     const fs::path png = Dir() / ("shot_" + name + ".png");
-    std::system(Chromium(Dir() / "profile", "--screenshot='" + png.string() + "'", Url(page, query)).c_str());
+    std::system(Chromium("--screenshot='" + png.string() + "'", Url(page, query)).c_str());
     if (!fs::exists(png)) {
       ADD_FAILURE() << "chromium wrote no screenshot of " << Url(page, query);
       return Image8(kWidth, kHeight, 4, 0);
@@ -129,7 +131,7 @@ class WebPage : public ::testing::Test {
   }
 
   static std::string Dom(const fs::path& page, const std::string& query) {
-    return Capture(Chromium(Dir() / "profile", "--dump-dom", Url(page, query)));
+    return Capture(Chromium("--dump-dom", Url(page, query)));
   }
 
   static double Psnr(const Image8& a, const Image8& b) {
@@ -202,6 +204,40 @@ TEST_F(WebPage, SceneOfThreeInstancesMatchesRender) {
   EXPECT_LT(Psnr(shot, Image8(kWidth, kHeight, 4, 128)), kMinPsnr - 10);
   const std::string dom = Dom(page, "camera=" + CameraParameter(view));
   EXPECT_NE(dom.find("instances 3 drawn, 0 culled"), std::string::npos) << "the stats line: " << dom.substr(0, 2000);
+}
+
+// `voltree eval` embeds the page beside each held-out truth; the frame, opened at the camera's
+// size, shows what eval measured (its voltree image over the same grey, no LOD history).
+TEST_F(WebPage, ReportFrameMatchesEvalsImage) {
+  const fs::path report = Dir() / "report";
+  const test::Outcome outcome = test::VoltreeCaptured("eval '" + (Dir() / "capture").string() +
+                                                      "' --levels auto --no-input --no-plots --quiet --report '" +
+                                                      report.string() + "'");
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const std::string html = ReadFile(report / "index.html");
+  const size_t frame = html.find("<iframe src=\"");
+  ASSERT_NE(frame, std::string::npos) << "no interactive frame in the report";
+  const size_t start = frame + 13, end = html.find('"', start);
+  std::string src;  // the attribute, HTML-unescaped (only &amp; occurs in it)
+  for (size_t i = start; i < end; ++i) {
+    src += html[i];
+    if (html.compare(i, 5, "&amp;") == 0) i += 4;
+  }
+  ASSERT_EQ(src.rfind("eval/web/index.html?", 0), 0u) << src;
+  const size_t query = src.find('?') + 1;
+  const View held_out = ReadColmapText(Dir() / "capture" / "truth" / "sparse").Views().at(0);
+  const fs::path png = Dir() / "shot_report.png";
+  const std::string command =
+      Chromium("--screenshot='" + png.string() + "'",
+               "file://" + (report / "eval" / "web" / "index.html").string() + "?" + src.substr(query),
+               held_out.camera.width, held_out.camera.height);
+  std::system(command.c_str());
+  ASSERT_TRUE(fs::exists(png)) << command;
+  const Image8 shot = ReadImage8(png, 4);
+  const Image8 measured = ReadImage8(report / "eval" / "held_out" / (fs::path(held_out.name).stem().string() + "_voltree.png"), 4);
+  const double psnr = Psnr(shot, measured);
+  std::printf("report frame vs eval's image: %.2f dB\n", psnr);
+  EXPECT_GE(psnr, kMinPsnr);
 }
 
 // data.js with the asset's bytes changed by `edit` (on the base64 text).

@@ -299,7 +299,8 @@ function ShouldDescend(level, finestLevel, cellSize, texels, distance, halfDiago
   return texelPixels > kLod.maxTexelPixels * band;
 }
 
-// TraverseBackToFront: cells to draw, far to near; `refined` is the per-cell LOD history.
+// TraverseBackToFront: cells to draw, far to near; `refined` is the per-cell LOD history (null:
+// none, each frame on its own, as `voltree eval` renders).
 function TraverseBackToFront(index, eye, focal, texels, refined) {
   const out = [];
   const distance = (c) => Math.hypot(index.centre[3 * c] - eye[0], index.centre[3 * c + 1] - eye[1], index.centre[3 * c + 2] - eye[2]);
@@ -312,11 +313,13 @@ function TraverseBackToFront(index, eye, focal, texels, refined) {
   };
   const visit = (cell) => {
     const level = index.levelOf[cell], size = index.cellSize[level];
-    const previous = refined[cell];
+    const previous = refined ? refined[cell] : -1;
     const descend = index.children[cell].length > 0 &&
       ShouldDescend(level, index.levels - 1, size, texels, distance(cell), 0.5 * Math.sqrt(3) * size, focal, previous);
-    if (previous === 1 && !descend) forget(cell);
-    refined[cell] = descend ? 1 : 0;
+    if (refined) {
+      if (previous === 1 && !descend) forget(cell);
+      refined[cell] = descend ? 1 : 0;
+    }
     if (descend) {
       for (const child of farToNear(index.children[cell])) visit(child);
       return;
@@ -702,8 +705,9 @@ class TreeRenderer {
 // ---------------------------------------------------------------- the scene (render/scene_renderer.cpp)
 
 class SceneRenderer {
-  constructor(gl, data, s3tc) {
+  constructor(gl, data, s3tc, lodHistory) {
     this.gl = gl;
+    this.lodHistory = lodHistory;
     this.single = data.single;
     this.ground = data.ground;
     this.assets = data.assets.map((entry) => {
@@ -778,7 +782,7 @@ class SceneRenderer {
     if (this.ground) this.DrawGround(cam, depth);
     for (const i of order) {
       const instance = this.instances[i];
-      const tree = this.renderers[instance.asset].Draw(cam, instance, depth, this.lodStates[i], tint);
+      const tree = this.renderers[instance.asset].Draw(cam, instance, depth, this.lodHistory ? this.lodStates[i] : null, tint);
       stats.cells += tree.cells, stats.billboards += tree.billboards, stats.views = tree.views;
       if (tree.minLevel >= 0) stats.minLevel = stats.minLevel < 0 ? tree.minLevel : Math.min(stats.minLevel, tree.minLevel);
       stats.maxLevel = Math.max(stats.maxLevel, tree.maxLevel);
@@ -812,6 +816,7 @@ class SceneRenderer {
 //   orbit=AZIMUTH,ELEVATION,DISTANCE              degrees, degrees, scene units about the default centre
 //   background=R,G,B                              0..255, opaque (default: transparent over the page)
 //   tint=1                                        colour billboards by octree level
+//   history=0                                     no LOD hysteresis: each frame on its own, as `eval` renders
 //   s3tc=0                                        decode DXT5 in JavaScript even when S3TC is there
 //   ui=0                                          no stats line (for screenshots)
 //   bench=N                                       draw N orbit frames, report the median frame time
@@ -838,7 +843,7 @@ function Main() {
   const gl = canvas.getContext("webgl2", { antialias: false, premultipliedAlpha: true, alpha: true, depth: true, preserveDrawingBuffer: true });
   if (!gl) throw new Error("this browser has no WebGL2");
   const s3tc = params.get("s3tc") === "0" ? null : gl.getExtension("WEBGL_compressed_texture_s3tc");
-  const scene = new SceneRenderer(gl, VOLTREE_DATA, s3tc);
+  const scene = new SceneRenderer(gl, VOLTREE_DATA, s3tc, params.get("history") !== "0");
   const background = params.has("background") ? [...Numbers(params, "background", 3).map((c) => c / 255), 1] : [0, 0, 0, 0];
   const tint = params.get("tint") === "1";
   const fixed = Numbers(params, "camera", 13);
@@ -917,7 +922,9 @@ function Main() {
     Redraw();
   }, { passive: false });
   canvas.addEventListener("dblclick", () => (Object.assign(orbit, home), Redraw()));
-  window.addEventListener("resize", Redraw);
+  // Drawn again in the same frame as any change of the canvas's size (a headless window settles
+  // its size after load; a resized canvas is blank until drawn).
+  new ResizeObserver(() => Frame()).observe(canvas);
   Frame();
 }
 
