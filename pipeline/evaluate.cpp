@@ -17,6 +17,8 @@
 #include "pipeline/plots.h"
 #include "pipeline/report_folder.h"
 #include "pipeline/report_html.h"
+#include "web/page_camera.h"
+#include "web/web_page.h"
 #include "render/gl_context.h"
 #include "render/tree_renderer.h"
 
@@ -293,6 +295,13 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   } else {
     result.notes.push_back("plots not drawn (turned off)");
   }
+  // The asset in the web page, one frame per held-out view at its camera (report_html.h).
+  if (options.images && held_out) {
+    WebPageOptions web;
+    web.input = asset_path;
+    web.output = staged.path() / kWebFolderName;
+    WriteWebPage(web);
+  }
   staged.Commit();
   report_folder.Keep();
 
@@ -369,9 +378,22 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   page.notes = result.notes;
   page.table = &result.table;
   for (const LevelPruning& level : pruning.levels) page.pruned_percent[level.level] = level.pruned_percent;
-  for (size_t v = 0; v < files.size() && options.images; ++v)
-    page.comparisons.push_back({(*held_out)[v].camera.name, files[v].truth, files[v].render, files[v].difference,
-                                result.table.Overall(ViewSet::kHeldOut).views[v].metrics});
+  for (size_t v = 0; v < files.size() && options.images; ++v) {
+    const View& camera = (*held_out)[v].camera;
+    HtmlComparison comparison;
+    comparison.view = camera.name;
+    comparison.truth = files[v].truth, comparison.render = files[v].render, comparison.difference = files[v].difference;
+    comparison.metrics = result.table.Overall(ViewSet::kHeldOut).views[v].metrics;
+    // As eval renders: over its grey, each view's levels chosen on its own (no LOD history).
+    if (const auto parameter = PageCameraParameter(camera)) {
+      comparison.interactive = Str(kEvalFolderName, "/", kWebFolderName, "/index.html?ui=0&history=0&background=",
+                                   int(std::lround(options.metrics.background_grey)), ",",
+                                   int(std::lround(options.metrics.background_grey)), ",",
+                                   int(std::lround(options.metrics.background_grey)), "&", *parameter);
+      comparison.interactive_height = int(std::lround(256.0 * camera.camera.height / camera.camera.width));
+    }
+    page.comparisons.push_back(comparison);
+  }
   page.difference_gain = options.difference_gain;
   for (const std::string& plot : result.plots) page.plots.push_back({plot, fs::path(plot).stem().string()});
   page.thumbnails = OrbitThumbnails(report, 12);
