@@ -17,5 +17,6 @@ void AddRenderCommand(CLI::App& app);
 void AddEvalCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
 void AddWebCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace voltree::app

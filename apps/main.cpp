@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   voltree::app::AddEvalCommand(app);
   voltree::app::AddRunCommand(app);
   voltree::app::AddWebCommand(app);
+  voltree::app::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
