@@ -15,7 +15,7 @@ void AddViewCommand(CLI::App& app) {
       "view",
       "Open a .vtree asset or a scene .json in a window, drawn by the same renderer as `render`, with a panel of "
       "frame time, cells, billboards, levels, views and GPU bytes. Left drag turns, right drag pans, the wheel zooms, "
-      "W A S D fly, R resets; T tints levels, L switches the LOD rule, 0-9 force a level (again: automatic), P saves "
+      "W A S D fly, R resets; T tints levels, L switches the LOD rule, 0-9 force a level (again: automatic), V shows the nearest input view alone or the blend, P saves "
       "a screenshot (PNG + its camera as a COLMAP model, for `render --cameras`), Esc quits. Needs a display; "
       "`render` is the headless path");
   struct Arguments {
@@ -45,8 +45,8 @@ void AddViewCommand(CLI::App& app) {
     if (!args->background.empty()) options.background = ParseBackground(args->background);
     options.panel = !args->no_panel;
     const ViewerResult result = RunViewer(options);
-    std::printf("%d frames on %s, %zu screenshot%s\n", result.frames, result.renderer.c_str(), result.screenshots.size(),
-                result.screenshots.size() == 1 ? "" : "s");
+    std::printf("%d frames on %s, median %.2f ms per frame, %zu screenshot%s\n", result.frames, result.renderer.c_str(),
+                result.median_ms, result.screenshots.size(), result.screenshots.size() == 1 ? "" : "s");
   });
 }
 

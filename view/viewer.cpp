@@ -72,6 +72,7 @@ struct PanelStats {
   size_t cells = 0, billboards = 0, instances_drawn = 1, instances_culled = 0;
   int min_level = -1, max_level = -1;
   ViewPair views;
+  std::vector<size_t> cells_per_level;
 };
 
 // The window's state that callbacks and scripted events change.
@@ -89,6 +90,8 @@ void PressKey(Session& session, const std::string& key) {
     session.render.tint_levels = !session.render.tint_levels;
   } else if (key == "L") {
     session.render.lod.rule = session.render.lod.rule == LodRule::kScreen ? LodRule::kPlanes : LodRule::kScreen;
+  } else if (key == "V") {
+    session.render.nearest_view_only = !session.render.nearest_view_only;
   } else if (key == "R") {
     session.orbit.Reset();
   } else if (key == "W" || key == "S" || key == "A" || key == "D") {
@@ -186,14 +189,22 @@ void DrawPanel(const ViewerOptions& options, const Session& session, const Panel
   ImGui::Text("cells %zu, billboards %zu", stats.cells, stats.billboards);
   ImGui::Text("levels %d..%d%s", stats.min_level, stats.max_level,
               session.render.lod.forced_level >= 0 ? " (forced)" : "");
-  ImGui::Text("views %d + %d (%.2f / %.2f)", stats.views.first, stats.views.second, stats.views.first_weight,
-              stats.views.second_weight);
+  std::string per_level;
+  for (size_t level = 0; level < stats.cells_per_level.size(); ++level)
+    if (stats.cells_per_level[level] > 0) per_level += Str(per_level.empty() ? "" : ", ", "L", level, " ", stats.cells_per_level[level]);
+  ImGui::Text("drawn per level: %s", per_level.c_str());
+  const char* blend = session.render.nearest_view_only ? "nearest only" : "blended";
+  if (stats.instances_drawn + stats.instances_culled > 1 || options.input.extension() == ".json")
+    ImGui::Text("views: two per instance, %s", blend);
+  else
+    ImGui::Text("views %d + %d (%.2f / %.2f), %s", stats.views.first, stats.views.second, stats.views.first_weight,
+                stats.views.second_weight, blend);
   ImGui::Text("instances %zu drawn, %zu culled", stats.instances_drawn, stats.instances_culled);
   ImGui::Text("GPU %.1f KiB (buffers %.1f, atlases %.1f)", gpu.Total() / 1024.0, gpu.buffers / 1024.0, gpu.atlas / 1024.0);
   ImGui::Text("LOD %s, tint %s", LodRuleName(session.render.lod.rule), session.render.tint_levels ? "on" : "off");
   ImGui::TextDisabled("%s", renderer.c_str());
   ImGui::TextDisabled("drag turn, right drag pan, wheel zoom, WASD fly, R reset");
-  ImGui::TextDisabled("T tint, L LOD rule, 0-9 level, P screenshot, Esc quit");
+  ImGui::TextDisabled("T tint, L LOD rule, 0-9 level, V nearest view / blend, P screenshot, Esc quit");
   ImGui::End();
 }
 
@@ -261,6 +272,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   size_t next_event = 0;
   const double start = glfwGetTime();
   PanelStats stats;
+  std::vector<double> frame_ms;
   while (!glfwWindowShouldClose(window) && !session.quit) {
     glfwPollEvents();
     const double now = glfwGetTime() - start;
@@ -283,11 +295,12 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     if (drawing.scene_renderer) {
       const SceneFrameStats frame = drawing.scene_renderer->Draw(camera, {session.render});
       stats = {frame.frame_ms, frame.trees.cells, frame.trees.billboards, frame.instances_drawn, frame.instances_culled,
-               frame.trees.min_level, frame.trees.max_level, frame.trees.views};
+               frame.trees.min_level, frame.trees.max_level, frame.trees.views, frame.trees.cells_per_level};
       gpu = drawing.scene_renderer->GpuBytes();
     } else {
       const FrameStats frame = drawing.tree->Draw(camera, session.render);
-      stats = {frame.frame_ms, frame.cells, frame.billboards, 1, 0, frame.min_level, frame.max_level, frame.views};
+      stats = {frame.frame_ms, frame.cells, frame.billboards, 1, 0, frame.min_level, frame.max_level, frame.views,
+               frame.cells_per_level};
       gpu = drawing.tree->GpuBytes();
     }
     CheckGl("view: drawing");
@@ -307,6 +320,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     }
     glfwSwapBuffers(window);
     ++result.frames;
+    frame_ms.push_back(stats.frame_ms);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
@@ -314,6 +328,10 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   drawing.tree.reset();
   drawing.scene_renderer.reset();
   glfwDestroyWindow(window);
+  if (!frame_ms.empty()) {
+    std::nth_element(frame_ms.begin(), frame_ms.begin() + frame_ms.size() / 2, frame_ms.end());
+    result.median_ms = frame_ms[frame_ms.size() / 2];
+  }
   return result;
 }
 

@@ -4,7 +4,9 @@
 //
 // Mouse: left drag turns the orbit, right drag pans, the wheel zooms. Keys: W A S D fly (on the
 // ground's plane), R reset, T level tint, L LOD rule (screen / planes), 0-9 force that octree level
-// (the same key again: automatic LOD), P save a screenshot, Escape quit. A screenshot is the
+// (the same key again: automatic LOD), V the nearest input view alone or the two-view blend, P save
+// a screenshot, Escape quit. Pruning cannot be turned off here: a pruned billboard is not in the
+// asset (reconstruct --prune 1 builds an unpruned one to compare). A screenshot is the
 // window's pixels (without the panel) as PNG plus its camera as a COLMAP text model, so that
 // `voltree render ASSET --cameras DIR/view_000 --background 128,128,128` draws the same view.
 #pragma once
@@ -30,6 +32,7 @@ struct ViewerOptions {
 struct ViewerResult {
   std::vector<std::filesystem::path> screenshots;
   int frames = 0;
+  double median_ms = 0;  // of the frames' draw times (traversal, upload, draw, glFinish; no panel, no swap)
   std::string renderer;  // GL_RENDERER
 };
 

@@ -1,7 +1,7 @@
 // A scripted session for `voltree view --script FILE` (tests, demos): one event a line,
 //   SECONDS ACTION [ARGS]     e.g.  0.5 drag 40 -10   |  1 key T  |  1.2 screenshot  |  2 quit
-// ACTION: drag DX DY (turn, pixels), pan DX DY, scroll STEPS, key K (a key as typed: T, L, R, 0-9,
-// W, A, S, D, F12), screenshot, quit. '#' starts a comment. Times are seconds from the first frame,
+// ACTION: drag DX DY (turn, pixels), pan DX DY, scroll STEPS, key K (a key as typed: T, L, V, R,
+// 0-9, W, A, S, D, P), screenshot, quit. '#' starts a comment. Times are seconds from the first frame,
 // non-decreasing; events run in order once their time has come.
 #pragma once
 

@@ -1,7 +1,8 @@
 // `voltree view` in a real window: Xvfb gives GLFW an X display with Mesa's OpenGL, a script
 // drives the session (a drag, screenshots, the level tint), and each screenshot is compared with
 // `voltree render` from the camera saved beside it: RGB PSNR >= 35 dB over the same grey. The tint
-// toggle must change the image, and without a display the command names `render`. About 15 s.
+// and nearest-view toggles must change the image, and without a display the command names
+// `render`. About 15 s.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -82,10 +83,13 @@ TEST_F(ViewWindow, ScreenshotMatchesRenderAndTintChangesIt) {
                                      "0.3 screenshot\n"
                                      "0.4 key T\n"
                                      "0.5 screenshot\n"
-                                     "0.6 quit\n",
+                                     "0.6 key T\n"
+                                     "0.6 key V\n"
+                                     "0.7 screenshot\n"
+                                     "0.8 quit\n",
                                      "asset");
   ASSERT_EQ(outcome.status, 0) << outcome.output;
-  EXPECT_NE(outcome.output.find("2 screenshots"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("3 screenshots"), std::string::npos) << outcome.output;
   const fs::path shots = Dir() / "asset";
   const Image8 plain = ReadImage8(shots / "view_000.png", 4), tinted = ReadImage8(shots / "view_001.png", 4);
   const double psnr = Psnr(plain, RenderSaved(Asset().string(), shots / "view_000", "plain"));
@@ -96,6 +100,10 @@ TEST_F(ViewWindow, ScreenshotMatchesRenderAndTintChangesIt) {
   EXPECT_LT(Psnr(plain, tinted), 30) << "the level tint did not change the image";
   EXPECT_LT(tinted_psnr, 30) << "render draws no tint, the tinted window must differ from it";
   EXPECT_LT(Psnr(plain, Image8(256, 256, 4, 128)), kMinPsnr - 10) << "the window shows nothing but the background";
+  // V: the nearest input view alone, not the two-view blend.
+  const double nearest = Psnr(ReadImage8(shots / "view_002.png", 4), plain);
+  std::printf("nearest view alone vs the blend: %.2f dB\n", nearest);
+  EXPECT_LT(nearest, 40) << "V did not change the image";
 }
 
 TEST_F(ViewWindow, SceneFlownThroughMatchesRender) {
