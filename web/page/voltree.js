@@ -859,7 +859,7 @@ function Main() {
   if (params.get("ui") === "0") stats.hidden = true;
 
   const dpr = window.devicePixelRatio || 1;
-  let useFixed = !!fixed;  // a URL camera stays until the first drag
+  let useFixed = !!fixed;  // a URL camera stays until the first drag or zoom
   const Camera = () => {
     const width = Math.round(canvas.clientWidth * dpr), height = Math.round(canvas.clientHeight * dpr);
     if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
@@ -936,6 +936,7 @@ function Main() {
   });
   canvas.addEventListener("wheel", (e) => {
     e.preventDefault();
+    useFixed = false;
     orbit.distance = Math.max(orbit.radius * 0.2, orbit.distance * Math.exp(0.001 * e.deltaY));
     Redraw();
   }, { passive: false });
@@ -950,6 +951,6 @@ window.addEventListener("load", () => {
   try {
     Main();
   } catch (e) {
-    ShowError(e instanceof AssetError || e instanceof Error ? e.message : String(e));
+    ShowError(e instanceof Error ? e.message : String(e));
   }
 });
