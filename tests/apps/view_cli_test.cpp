@@ -1,8 +1,8 @@
 // `voltree view` in a real window: Xvfb gives GLFW an X display with Mesa's OpenGL, a script
 // drives the session (a drag, screenshots, the level tint), and each screenshot is compared with
 // `voltree render` from the camera saved beside it: RGB PSNR >= 35 dB over the same grey. The tint
-// and nearest-view toggles must change the image, and without a display the command names
-// `render`. About 15 s.
+// and nearest-view toggles must change the image, and without a display (or with too old an
+// OpenGL) the command names `render`. About 15 s.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -130,6 +130,15 @@ TEST_F(ViewWindow, WithoutADisplayNamesRender) {
   const test::Outcome outcome = test::VoltreeCaptured("view '" + Asset().string() + "'", "", "env -u DISPLAY -u WAYLAND_DISPLAY ");
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("no display"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("voltree render"), std::string::npos) << outcome.output;
+}
+
+// Mesa told to offer OpenGL 3.3 stands for an old driver: the message says what is needed.
+TEST_F(ViewWindow, TooOldOpenGlIsNamed) {
+  const test::Outcome outcome = test::VoltreeCaptured("view '" + Asset().string() + "'", "",
+                                                      "MESA_GL_VERSION_OVERRIDE=3.3 timeout 120 xvfb-run -a ");
+  EXPECT_EQ(outcome.status, 1) << outcome.output;
+  EXPECT_NE(outcome.output.find("no OpenGL 4.3 core profile"), std::string::npos) << outcome.output;
   EXPECT_NE(outcome.output.find("voltree render"), std::string::npos) << outcome.output;
 }
 
