@@ -16,5 +16,7 @@ void AddInfoCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddEvalCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
+void AddWebCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
 
 }  // namespace voltree::app

@@ -24,7 +24,8 @@ std::vector<OptionSpec> MakeRegistry() {
       {"--held-out", {"StudioOptions.held_out"}, "Held-out truth views, between the rings at other azimuths"},
       {"--rings", {"StudioOptions.rings"}, "Camera rings at elevations from --min-elevation to 35 degrees"},
       {"--size",
-       {"StudioOptions.width", "StudioOptions.height", "RenderJobOptions.width", "RenderJobOptions.height"},
+       {"StudioOptions.width", "StudioOptions.height", "RenderJobOptions.width", "RenderJobOptions.height",
+        "ViewerOptions.width", "ViewerOptions.height"},
        "Image size WIDTHxHEIGHT in pixels, or one number for a square"},
       {"--supersample", {"StudioOptions.supersample"}, "Samples per pixel and axis (mattes get 1/S^2 alpha steps)"},
       {"--camera", {"StudioOptions.camera_model"}, "Camera model of the photos: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV"},
@@ -142,14 +143,14 @@ std::vector<OptionSpec> MakeRegistry() {
       {"--cameras",
        {"RenderJobOptions.cameras"},
        "COLMAP text model folder (cameras.txt, images.txt); each frame is named after its image"},
-      {"--assets", {"RenderJobOptions.asset_folder"}, "Scenes: folder to look their assets up in (default: the scene's folder)"},
+      {"--assets", {"RenderJobOptions.asset_folder", "ViewerOptions.asset_folder", "WebPageOptions.asset_folder"}, "Scenes: folder to look their assets up in (default: the scene's folder)"},
       {"--level", {"LodOptions.forced_level"}, "Draw only this octree level (default: LOD)"},
       {"--lod",
        {"LodOptions.rule"},
        "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view direction)"},
       {"--texel-pixels", {"LodOptions.max_texel_pixels"}, "LOD: descend while a billboard texel covers more pixels than this"},
       {"--tint-levels", {"TreeRenderOptions.tint_levels"}, "Colour billboards by octree level (to see the LOD)"},
-      {"--background", {"TreeRenderOptions.background"}, "R,G,B 0..255, opaque (default transparent)"},
+      {"--background", {"TreeRenderOptions.background", "ViewerOptions.background"}, "Background colour R,G,B 0..255, opaque"},
       {"--turntable",
        {"RenderJobOptions.turntable"},
        "Also (or only) encode the orbit frames as an H.264 .mp4 at 30 fps over the background (grey when "
@@ -173,6 +174,12 @@ std::vector<OptionSpec> MakeRegistry() {
        "Check the existing mattes against each other through the cameras in sparse/ and matte again, inside the "
        "visual hull of the others, the photos that disagree (what 'run' does with photos alone); their mattes and "
        "foregrounds are replaced"},
+      // The desktop viewer (view).
+      {"--script",
+       {"ViewerOptions.script"},
+       "Scripted events, one a line: SECONDS drag|pan DX DY, scroll STEPS, key K, screenshot, quit; the session ends "
+       "after the last one"},
+      {"--no-panel", {"ViewerOptions.panel"}, "No statistics panel"},
       // Evaluation (eval, run).
       {"--grey",
        {"ImageMetricsOptions.background_grey"},

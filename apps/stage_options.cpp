@@ -1,5 +1,6 @@
 #include "apps/stage_options.h"
 
+#include <cmath>
 #include <string>
 
 #include "apps/option_parsing.h"
@@ -146,10 +147,17 @@ void AddRenderOptions(CLI::App& command, TreeRenderOptions& render) {
   AddChoice(command, "--lod", render.lod.rule, {{"screen", LodRule::kScreen}, {"planes", LodRule::kPlanes}});
   AddOption(command, "--texel-pixels", render.lod.max_texel_pixels);
   AddFlag(command, "--tint-levels", render.tint_levels);
-  AddParsedOption<std::array<float, 4>>(
-      command, "--background", render.background,
-      [](const std::string& text, std::array<float, 4>& out) { out = ParseBackground("--background", text); }, "");
+  AddBackgroundOption(command, render.background);
   AddOption(command, "--billboard-scale", render.billboard_scale);
+}
+
+CLI::Option* AddBackgroundOption(CLI::App& command, std::array<float, 4>& background) {
+  const auto component = [&](int c) { return std::to_string(int(std::lround(background[c] * 255))); };
+  const std::string shown =
+      background[3] == 0 ? "transparent" : component(0) + "," + component(1) + "," + component(2);
+  return AddParsedOption<std::array<float, 4>>(
+      command, "--background", background,
+      [](const std::string& text, std::array<float, 4>& out) { out = ParseBackground("--background", text); }, shown);
 }
 
 void AddThreadsOption(CLI::App& command, int& threads) { AddOption(command, "--threads", threads); }

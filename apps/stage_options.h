@@ -27,6 +27,9 @@ void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit);
 void AddEvaluateOptions(CLI::App& command, EvaluateOptions& evaluate);
 void AddRenderOptions(CLI::App& command, TreeRenderOptions& render);
 
+// --background R,G,B bound to straight RGBA; the default shown is the array's ("transparent" when alpha is 0).
+CLI::Option* AddBackgroundOption(CLI::App& command, std::array<float, 4>& background);
+
 // --threads for every stage a command runs: one flag, one count.
 void AddThreadsOption(CLI::App& command, int& threads);
 

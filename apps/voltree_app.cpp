@@ -31,6 +31,8 @@ std::unique_ptr<CLI::App> MakeVoltreeApp() {
   AddRenderCommand(*app);
   AddEvalCommand(*app);
   AddRunCommand(*app);
+  AddWebCommand(*app);
+  AddViewCommand(*app);
   return app;
 }
 

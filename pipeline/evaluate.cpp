@@ -13,6 +13,8 @@
 #include "pipeline/report_html.h"
 #include "render/gl_context.h"
 #include "render/tree_renderer.h"
+#include "web/page_camera.h"
+#include "web/web_page.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -138,6 +140,21 @@ EvaluateResult ResultOf(EvaluationReport report, const fs::path& folder, double 
   return result;
 }
 
+// Frames the web page (REPORT/eval/web/) at each held-out camera, as eval renders: over its grey,
+// each view's levels chosen on its own (no LOD history).
+void LinkWebPage(const std::vector<TruthView>& held_out, double grey, std::vector<ComparisonFiles>* comparisons) {
+  const int level = int(std::lround(grey));
+  for (size_t v = 0; v < comparisons->size() && v < held_out.size(); ++v) {
+    const View& camera = held_out[v].camera;
+    const std::optional<std::string> parameter = PageCameraParameter(camera);
+    if (!parameter) continue;  // a camera the page cannot take (distortion): no frame
+    ComparisonFiles& files = (*comparisons)[v];
+    files.interactive = Str(kEvalFolderName, "/", kWebFolderName, "/index.html?ui=0&history=0&background=", level, ",",
+                            level, ",", level, "&", *parameter);
+    files.interactive_height = int(std::lround(256.0 * camera.camera.height / camera.camera.width));
+  }
+}
+
 }  // namespace
 
 fs::path EvaluateOptions::AssetPath() const { return asset.empty() ? workspace / "tree.vtree" : asset; }
@@ -187,6 +204,10 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   DrawnPlots plots = ReportPlots(options, report, folder, staged.path());
   report.plots = std::move(plots.files);
   report.notes.insert(report.notes.end(), plots.notes.begin(), plots.notes.end());
+  if (options.images && truth.held_out) {  // the asset in the web page, framed beside each truth
+    WriteWebPage({.input = asset_path, .output = staged.path() / kWebFolderName});
+    LinkWebPage(held_out, options.metrics.background_grey, &report.comparisons);
+  }
   staged.Commit();
   report_folder.Keep();
 

@@ -31,6 +31,8 @@ struct EvaluationRenderSettings {
 struct ComparisonFiles {
   std::string view;  // the view's image name
   std::string truth, render, difference;
+  std::string interactive;       // the web page at this view's camera (report_html.h), or empty
+  int interactive_height = 256;  // its frame's height for a width of 256
 };
 
 struct EvaluationRenders {

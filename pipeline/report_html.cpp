@@ -32,7 +32,7 @@ std::string SummaryCells(const MetricsReport& report) {
 const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;max-width:1400px}
 table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}
 th{background:#eee}td:first-child{text-align:left}.note{color:#844}figure{display:inline-block;margin:0 6px 0 0}
-figure img{width:256px;image-rendering:pixelated}figcaption{font-size:85%;text-align:center}
+figure img{width:256px;image-rendering:pixelated}figure iframe{border:0;vertical-align:top}figcaption{font-size:85%;text-align:center}
 .strip img{width:96px;margin-right:2px}.plots img{max-width:640px;margin:0 1em 1em 0})";
 
 const char* kMetricHeader =
@@ -121,15 +121,22 @@ std::string ReportHtml(const ReportPage& page) {
   }
 
   if (!page.comparisons.empty()) {
-    html << "<h2>Held-out views</h2>\n<p>truth | voltree (auto LOD) | difference &times;"
-         << Fixed(page.difference_gain, 0) << " (black: equal), all over the evaluation's grey.</p>\n";
+    const bool interactive = !page.comparisons.front().interactive.empty();
+    html << "<h2>Held-out views</h2>\n<p>truth | " << (interactive ? "voltree (interactive: the web page, eval/web/) | " : "")
+         << "voltree (auto LOD) | difference &times;" << Fixed(page.difference_gain, 0)
+         << " (black: equal), all over the evaluation's grey.</p>\n";
     for (const HtmlComparison& c : page.comparisons) {
       html << "<div><h3>" << HtmlEscape(c.view) << "</h3>\n";
       const std::pair<const std::string*, const char*> images[] = {
           {&c.truth, "truth"}, {&c.render, "voltree"}, {&c.difference, "difference"}};
-      for (const auto& [src, caption] : images)
+      for (const auto& [src, caption] : images) {
         html << "<figure><a href=\"" << HtmlEscape(*src) << "\"><img src=\"" << HtmlEscape(*src) << "\" alt=\""
              << caption << "\"></a><figcaption>" << caption << "</figcaption></figure>\n";
+        if (src == &c.truth && !c.interactive.empty())  // beside the truth: the web page at this camera, to turn
+          html << "<figure><iframe src=\"" << HtmlEscape(c.interactive) << "\" title=\"voltree (interactive)\" "
+               << "width=\"256\" height=\"" << c.interactive_height << "\" loading=\"lazy\"></iframe><figcaption>"
+               << "voltree (interactive: drag, wheel)</figcaption></figure>\n";
+      }
       html << "<p>RGB PSNR " << Fixed(c.metrics.rgb_psnr, 2) << " dB, SSIM " << Fixed(c.metrics.rgb_ssim, 3)
            << ", alpha PSNR " << Fixed(c.metrics.alpha_psnr, 2) << " dB, P " << Fixed(c.metrics.precision, 3) << ", R "
            << Fixed(c.metrics.recall, 3) << ", RMS " << Fixed(c.metrics.multiscale_rms, 4) << "</p></div>\n";

@@ -1,6 +1,7 @@
 // The evaluation report page, REPORT/index.html: one self-contained HTML file (inline CSS, no
 // scripts) with the headline table, the per-level table, the side-by-side images of every
-// held-out view (truth | voltree | difference, PNG files in REPORT/eval/) and the plots.
+// held-out view (truth | voltree | difference, PNG files in REPORT/eval/; and the interactive
+// web page in a frame, REPORT/eval/web/, when written) and the plots.
 #pragma once
 
 #include <map>
@@ -18,6 +19,8 @@ struct HtmlComparison {
   std::string view;                        // the view's image name
   std::string truth, render, difference;   // paths relative to the page
   ViewMetrics metrics;
+  std::string interactive;                 // the web page at this view's camera (URL relative to the page), or empty
+  int interactive_height = 256;            // the frame's height for a width of 256 (the camera's aspect)
 };
 
 struct HtmlLink {

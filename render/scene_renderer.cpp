@@ -44,6 +44,8 @@ void Accumulate(const FrameStats& tree, FrameStats* total) {
   if (tree.min_level >= 0)
     total->min_level = total->min_level < 0 ? tree.min_level : std::min(total->min_level, tree.min_level);
   total->max_level = std::max(total->max_level, tree.max_level);
+  if (total->cells_per_level.size() < tree.cells_per_level.size()) total->cells_per_level.resize(tree.cells_per_level.size(), 0);
+  for (size_t level = 0; level < tree.cells_per_level.size(); ++level) total->cells_per_level[level] += tree.cells_per_level[level];
 }
 
 }  // namespace

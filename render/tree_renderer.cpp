@@ -190,6 +190,7 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
   // The asset's frame: view selection, traversal order and LOD are all computed there.
   const Eigen::Vector3d eye = model.ToAsset(camera.pose.Center());
   stats.views = SelectViews(views_, centre_, eye);
+  if (options.nearest_view_only) stats.views.second = stats.views.first, stats.views.first_weight = 1, stats.views.second_weight = 0;
   const TraversalCamera traversal_camera{eye, 0.5 * (camera.camera.FocalX() + camera.camera.FocalY()),
                                          model.DirectionToAsset(camera.pose.ViewDirection())};
   std::vector<uint32_t> cells;
@@ -203,6 +204,8 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
     records->push_back({cell, a, b, 0});
     stats.billboards += (a != OctreeIndex::kNone) + (b != OctreeIndex::kNone);
     const int level = index_.LevelOf(cell);
+    if (stats.cells_per_level.size() <= size_t(level)) stats.cells_per_level.resize(level + 1, 0);
+    ++stats.cells_per_level[level];
     stats.min_level = stats.min_level < 0 ? level : std::min(stats.min_level, level);
     stats.max_level = std::max(stats.max_level, level);
   }

@@ -54,6 +54,7 @@ struct TreeRenderOptions {
   bool lod_history = true;  // LOD hysteresis from the previous frames' choices (frames then depend
                             // on the sequence rendered before them, deterministically)
   bool tint_levels = false;  // colour each billboard by its octree level (LOD figures)
+  bool nearest_view_only = false;  // draw only the nearest input view's billboards (to see what the blend adds)
   void Check() const;
 };
 
@@ -77,6 +78,7 @@ struct FrameStats {
   size_t cells = 0;       // cells drawn
   size_t billboards = 0;  // billboard textures fetched (up to two per cell)
   int min_level = -1, max_level = -1;
+  std::vector<size_t> cells_per_level;  // cells drawn at each octree level (index = level)
   ViewPair views;
   double traversal_ms = 0;  // CPU traversal and record building
   double frame_ms = 0;      // traversal + upload + draw + glFinish (no read-back)

@@ -96,9 +96,14 @@ TEST_F(EvalCli, WritesMetricsAndAReportWithItsImages) {
   const std::string html = ReadFile(dir_ / "report" / "index.html");
   const std::regex source(R"re(src="([^"]+)")re");
   int images = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), source); it != std::sregex_iterator(); ++it, ++images)
-    EXPECT_TRUE(fs::exists(dir_ / "report" / (*it)[1].str())) << (*it)[1].str();
-  EXPECT_GE(images, 4 * 3 + 4);  // truth | voltree | difference per held-out view, orbit thumbnails
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), source); it != std::sregex_iterator(); ++it, ++images) {
+    const std::string file = (*it)[1].str().substr(0, (*it)[1].str().find('?'));  // the web page's camera is a query
+    EXPECT_TRUE(fs::exists(dir_ / "report" / file)) << (*it)[1].str();
+  }
+  EXPECT_GE(images, 4 * 4 + 4);  // truth | web page | voltree | difference per held-out view, orbit thumbnails
+  const std::regex frame("<iframe src=\"eval/web/index.html\\?");  // the web page beside each truth
+  EXPECT_EQ(std::distance(std::sregex_iterator(html.begin(), html.end(), frame), std::sregex_iterator()), 4);
+  EXPECT_TRUE(fs::exists(dir_ / "report" / "eval" / "web" / "data.js"));
   EXPECT_NE(html.find("held_003.png"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "report" / "eval" / "held_out" / "held_000_difference.png"));
   if (std::system("command -v gnuplot > /dev/null") == 0) {
