@@ -16,5 +16,7 @@ void AddInfoCommand(CLI::App& app);
 void AddRenderCommand(CLI::App& app);
 void AddEvalCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
+void AddBatchCommand(CLI::App& app);
+void AddSceneCommand(CLI::App& app);
 
 }  // namespace voltree::app

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "voltree captures real trees from photographs as compact volumetric assets and renders them.\n"
       "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render -> eval;\n"
-      "'voltree run DIR' chains them on a workspace of photos.\n"
+      "'voltree run DIR' chains them on a workspace of photos; 'voltree batch ROOT' runs many workspaces.\n"
       "Run 'voltree COMMAND --help' for the options of a command."};
   voltree::InstallInterruptCleanup();  // Ctrl-C removes half-built output folders
   app.require_subcommand(1);
@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
   voltree::app::AddRenderCommand(app);
   voltree::app::AddEvalCommand(app);
   voltree::app::AddRunCommand(app);
+  voltree::app::AddBatchCommand(app);
+  voltree::app::AddSceneCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
