@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -32,6 +34,28 @@ std::string JobTable(const std::string& log) {
   if (start == std::string::npos) return log.find("Nothing to be done") != std::string::npos ? "Nothing to be done.\n" : "";
   const size_t end = log.find("\n\n", start);
   return log.substr(start, end == std::string::npos ? std::string::npos : end - start + 1);
+}
+
+// The earliest stage of each capture that a dry run plans, from the jobs snakemake lists
+// ("rule compress:" ... "    wildcards: tree=oak").
+std::map<std::string, std::string> PlannedStages(const std::string& log) {
+  std::map<std::string, std::string> planned;
+  std::istringstream lines(log);
+  std::string rule;
+  const auto order = [](const std::string& stage) {
+    return std::find(kBatchStages.begin(), kBatchStages.end(), stage) - kBatchStages.begin();
+  };
+  for (std::string line; std::getline(lines, line);) {
+    for (const char* prefix : {"rule ", "localrule "})
+      if (line.rfind(prefix, 0) == 0 && line.back() == ':')
+        rule = line.substr(std::string(prefix).size(), line.size() - std::string(prefix).size() - 1);
+    const std::string wildcard = "    wildcards: tree=";
+    if (line.rfind(wildcard, 0) != 0) continue;
+    const std::string tree = line.substr(wildcard.size());
+    const auto known = planned.find(tree);
+    if (known == planned.end() || order(rule) < order(known->second)) planned[tree] = rule;
+  }
+  return planned;
 }
 
 }  // namespace
@@ -118,8 +142,13 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
   result.jobs = JobTable(log);
   result.captures = int(folders.captures.size());
 
+  const std::map<std::string, std::string> planned = options.dry_run ? PlannedStages(log) : std::map<std::string, std::string>{};
   for (const std::string& tree : folders.captures) {
     result.rows.push_back(SummarizeCapture(root, tree, options.dry_run));
+    if (const auto stage = planned.find(tree); stage != planned.end()) {  // outputs there, but out of date
+      result.rows.back().status = CaptureStatus::kPlanned;
+      result.rows.back().detail = stage->second;
+    }
     if (result.rows.back().status == CaptureStatus::kFailed) ++result.failed;
   }
   for (const std::string& name : folders.skipped) result.rows.push_back(SkippedFolder(name));
