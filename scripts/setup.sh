@@ -9,7 +9,7 @@ packages=(
   colmap libopencv-dev libceres-dev libeigen3-dev libopenimageio-dev openimageio-tools
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libsquish-dev libcli11-dev nlohmann-json3-dev libtbb-dev libzstd-dev
-  libtinygltf-dev libtinyobjloader-dev gnuplot-nox ffmpeg
+  libtinygltf-dev libtinyobjloader-dev gnuplot-nox ffmpeg snakemake
 )
 missing=()
 for package in "${packages[@]}"; do
