@@ -39,17 +39,18 @@ void AddBatchCommand(CLI::App& app) {
   BatchOptions& o = args->options;
   command->add_option("ROOT", args->root, "Folder of capture workspaces, one per tree: ROOT/TREE/images/")
       ->required();
-  command->add_option("-j,--jobs", o.jobs,
+  auto* jobs = command->add_option("-j,--jobs", o.jobs,
                       "Jobs at once; on this machine its cores are shared between them (with --profile: jobs "
-                      "submitted at once)")
+                      "queued at once; default: the profile's)")
       ->capture_default_str();
   command->add_option("--profile", o.profile,
                       "Snakemake profile (a folder with config.yaml, or a name in ~/.config/snakemake/) that "
                       "sends the jobs to a cluster");
   command->add_flag("-n,--dry-run", o.dry_run, "Print the jobs that would run and the captures' state; run nothing");
   command->add_flag("--quiet", args->quiet, "No progress lines");
-  command->callback([args] {
+  command->callback([args, jobs] {
     BatchOptions options = args->options;
+    options.jobs_given = jobs->count() > 0;
     options.root = args->root;
     options.voltree = std::filesystem::read_symlink("/proc/self/exe");
     options.snakefile = std::filesystem::path(VOLTREE_WORKFLOWS_DIR) / "Snakefile";

@@ -96,7 +96,8 @@ std::vector<std::string> SnakemakeArguments(const BatchOptions& options, const f
   for (const char* flag : {"--keep-going", "--rerun-incomplete", "--nocolor", "--scheduler", "greedy"})
     args.push_back(flag);
   if (!profile.empty()) {
-    args.insert(args.end(), {"--profile", profile.string(), "--jobs", std::to_string(options.jobs)});
+    args.insert(args.end(), {"--profile", profile.string()});
+    if (options.jobs_given) args.insert(args.end(), {"--jobs", std::to_string(options.jobs)});
   } else {
     // This machine's cores shared by `jobs` captures at once; memory as the jobs declare it.
     const int cores = std::max(MachineCores(options), options.jobs);

@@ -15,7 +15,8 @@ namespace voltree {
 
 struct BatchOptions {
   std::filesystem::path root;      // folders ROOT/TREE/images/
-  int jobs = 1;                    // captures' jobs at once; locally the cores are split between them
+  int jobs = 1;                    // jobs at once; locally the cores are split between them
+  bool jobs_given = false;         // with a profile, -j overrides the profile's own `jobs` only when given
   std::string profile;             // a Snakemake profile (folder or name); empty: run on this machine
   bool dry_run = false;            // print the planned jobs, run nothing
   std::filesystem::path voltree;   // the binary the workflow's jobs run
