@@ -17,7 +17,8 @@ for ((i = 0; i < trees; i++)); do
 done
 for jobs in 1 2; do
   root=$out/j$jobs
-  rm -rf "$root" && cp -r "$out/captures" "$root"
+  rm -rf "$root" && mkdir -p "$root"
+  for ((i = 0; i < trees; i++)); do cp -r "$out/captures/$(printf "tree_%02d" "$i")" "$root/"; done
   start=$(date +%s.%N)
   "$voltree" batch "$root" -j "$jobs" --quiet >"$out/j$jobs.txt" 2>&1 || true
   end=$(date +%s.%N)

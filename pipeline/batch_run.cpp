@@ -153,6 +153,12 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
     if (result.rows.back().status == CaptureStatus::kFailed) ++result.failed;
   }
   for (const std::string& name : folders.skipped) result.rows.push_back(SkippedFolder(name));
+  // Every capture built but no scene: the scene rule failed (a survey CSV it could not use).
+  const fs::path scene_log = root / kBatchFolder / "scene.log";
+  if (!child.ok() && result.failed == 0 && !fs::exists(root / "scene.json") && fs::exists(scene_log)) {
+    result.scene_log = scene_log;
+    return result;
+  }
   // A failure no capture's log explains is the workflow's own (a locked folder, a bad config).
   if (!child.ok() && result.failed == 0)
     Fail("snakemake failed (", child.signal ? Str("signal ", child.signal) : Str("exit status ", child.exit_code),

@@ -33,6 +33,7 @@ struct BatchResult {
   std::string jobs;                  // snakemake's table of the jobs it planned, or "Nothing to be done."
   int captures = 0;
   std::filesystem::path scene;       // ROOT/scene.json when the batch wrote it
+  std::filesystem::path scene_log;   // the scene rule's log when it failed (a bad survey CSV)
   int failed = 0;
 };
 

@@ -2,7 +2,7 @@
 // captures (8 photos of 96x96, 3 levels, codebooks of 32). Every asset is built; a second run
 // does nothing; a deleted asset is rebuilt alone; a capture whose photos are broken fails alone,
 // named with its log; --dry-run prints the planned jobs (also through the example SLURM profile,
-// which submits nothing in a dry run); and the bad inputs get their messages. Skipped when the
+// which submits nothing in a dry run); a survey CSV places the trees; and the bad inputs get their messages. Skipped when the
 // binary is not built.
 #include <gtest/gtest.h>
 
@@ -121,6 +121,20 @@ TEST_F(BatchCli, BuildsEveryCaptureResumesAndRebuildsOnlyWhatIsMissing) {
   // Snakemake's job table: compress, eval and the scene, no reconstruction.
   EXPECT_TRUE(Has(third.output, "\ncompress        1")) << third.output;
   EXPECT_FALSE(Has(third.output, "\nreconstruct ")) << third.output;
+
+  // Surveyed positions: a CSV missing a tree fails the scene alone, named; a full one is used.
+  WriteFileAtomic(root / "batch.yaml", std::string(kBatchYaml) + "positions: survey.csv\n");
+  WriteFileAtomic(root / "survey.csv", "tree,x,y,rotation\noak,0,0,0\npine,12.5,-3,40\n");
+  const Outcome partial = Batch(root);
+  EXPECT_NE(partial.status, 0) << partial.output;
+  EXPECT_TRUE(Has(partial.output, "scene: failed; log: ")) << partial.output;
+  EXPECT_TRUE(Has(ReadFile(root / ".voltree-batch" / "scene.log"), "survey.csv: no row for tree 'young-oak'"));
+  EXPECT_EQ(AssetTimes(root), rebuilt);
+  WriteFileAtomic(root / "survey.csv", "tree,x,y,rotation\noak,0,0,0\npine,12.5,-3,40\nyoung-oak,-8,6,0\n");
+  const Outcome surveyed = Batch(root);
+  ASSERT_EQ(surveyed.status, 0) << surveyed.output;
+  EXPECT_TRUE(Has(ReadFile(root / "scene.json"), R"({"asset":"pine","position":[12.5,-3.0,0],"rotation":40.0)"))
+      << ReadFile(root / "scene.json");
 }
 
 TEST_F(BatchCli, ABrokenCaptureFailsAloneAndIsNamedWithItsLog) {
