@@ -138,6 +138,7 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
   progress.Say("batch", Str(options.dry_run ? "planning " : "running ", folders.captures.size(), " captures with ",
                             snakemake.string(), profile.empty() ? "" : " (profile " + profile.string() + ")",
                             "; log: ", result.snakemake_log.string()));
+  const fs::file_time_type started = fs::file_time_type::clock::now();
   const ChildResult child = RunChild(snakemake, SnakemakeArguments(options, profile), result.snakemake_log);
   const std::string log = ReadFile(result.snakemake_log);
   result.jobs = JobTable(log);
@@ -149,6 +150,11 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
     if (const auto stage = planned.find(tree); stage != planned.end()) {  // outputs there, but out of date
       result.rows.back().status = CaptureStatus::kPlanned;
       result.rows.back().detail = stage->second;
+    }
+    // A log older than this run is an earlier failure that snakemake did not get to retry.
+    if (result.rows.back().status == CaptureStatus::kFailed && fs::last_write_time(result.rows.back().log) < started) {
+      result.rows.back().status = CaptureStatus::kNotRun;
+      result.rows.back().log.clear();
     }
     if (result.rows.back().status == CaptureStatus::kFailed) ++result.failed;
   }
