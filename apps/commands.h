@@ -18,5 +18,7 @@ void AddEvalCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
 void AddWebCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
+void AddBatchCommand(CLI::App& app);
+void AddSceneCommand(CLI::App& app);
 
 }  // namespace voltree::app

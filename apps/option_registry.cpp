@@ -174,6 +174,20 @@ std::vector<OptionSpec> MakeRegistry() {
        "Check the existing mattes against each other through the cameras in sparse/ and matte again, inside the "
        "visual hull of the others, the photos that disagree (what 'run' does with photos alone); their mattes and "
        "foregrounds are replaced"},
+      // Many workspaces (batch, scene).
+      {"-j,--jobs",
+       {"BatchOptions.jobs"},
+       "Jobs at once; on this machine its cores are shared between them (with --profile: jobs queued at once; "
+       "default: the profile's)"},
+      {"--profile",
+       {"BatchOptions.profile"},
+       "Snakemake profile (a folder with config.yaml, or a name in ~/.config/snakemake/) that sends the jobs to a "
+       "cluster"},
+      {"-n,--dry-run", {"BatchOptions.dry_run"}, "Print the jobs that would run and the captures' state; run nothing"},
+      {"--positions", {"SceneLayoutOptions.positions"}, "Survey CSV: tree, x, y[, rotation][, scale]"},
+      {"--spacing",
+       {"SceneLayoutOptions.spacing"},
+       "Grid spacing in the assets' units (0: 1.25 times the widest asset's footprint)"},
       // The desktop viewer (view).
       {"--script",
        {"ViewerOptions.script"},

@@ -17,7 +17,7 @@ std::unique_ptr<CLI::App> MakeVoltreeApp() {
   auto app = std::make_unique<CLI::App>(
       "voltree captures real trees from photographs as compact volumetric assets and renders them.\n"
       "Pipeline: synth (photo studio) | calibrate + matte (capture) -> reconstruct -> compress -> render -> eval;\n"
-      "'voltree run DIR' chains them on a workspace of photos.\n"
+      "'voltree run DIR' chains them on a workspace of photos; 'voltree batch ROOT' runs many workspaces.\n"
       "Run 'voltree COMMAND --help' for the options of a command.");
   app->require_subcommand(1);
   app->set_version_flag("--version", "voltree 0.1.0");
@@ -31,6 +31,8 @@ std::unique_ptr<CLI::App> MakeVoltreeApp() {
   AddRenderCommand(*app);
   AddEvalCommand(*app);
   AddRunCommand(*app);
+  AddBatchCommand(*app);
+  AddSceneCommand(*app);
   AddWebCommand(*app);
   AddViewCommand(*app);
   return app;
