@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "compress/centre_bounds.h"
+#include "compress/center_bounds.h"
 #include "compress/principal_axes.h"
 #include "compress/vector_distance.h"
 #include "core/check.h"

@@ -21,7 +21,7 @@ struct Seeds {
 
 // `count` centres (at most the number of vectors), deterministic for a given seed whatever the
 // number of threads. All trials of a step are measured in one parallel pass, and for plain L2
-// two bounds skip most vectors without measuring them (compress/centre_bounds.h). `use_simd` =
+// two bounds skip most vectors without measuring them (compress/center_bounds.h). `use_simd` =
 // false keeps the bounds to the baseline instruction set (tests compare the two).
 Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3, bool use_simd = true);
 

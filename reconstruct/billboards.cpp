@@ -20,7 +20,7 @@ VolumeView MakeVolumeView(const View& view) {
   return out;
 }
 
-Eigen::Vector3d TexelCentre(const VolumeView& view, const Eigen::Vector3d& centre, double side, int texels, int row,
+Eigen::Vector3d TexelCenter(const VolumeView& view, const Eigen::Vector3d& centre, double side, int texels, int row,
                             int col) {
   const Eigen::Vector3d right = view.direction.cross(view.up);  // image +X = Z x (-Y)
   const double u = ((col + 0.5) / texels - 0.5) * side;
@@ -51,7 +51,7 @@ bool MakeBillboard(const LevelInput& in, size_t cell, const View& view, const Vo
     for (int col = 0; col < texels; ++col) {
       uint8_t* texel = out + (size_t(row) * texels + col) * 4;
       texel[0] = texel[1] = texel[2] = texel[3] = 0;
-      const Eigen::Vector3d p = TexelCentre(frame_view, centre, side, texels, row, col);
+      const Eigen::Vector3d p = TexelCenter(frame_view, centre, side, texels, row, col);
       Eigen::Vector2d pixel;
       if (!view.WorldToPixel(p, &pixel)) continue;
       const double half = 0.5 * focal * (side / texels) / view.pose.ToCamera(p).z();

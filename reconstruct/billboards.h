@@ -38,7 +38,7 @@ struct BillboardOptions {
 VolumeView MakeVolumeView(const View& view);
 
 // Texel centre (row, col) of the billboard of the cell centred at `centre` with side `side`.
-Eigen::Vector3d TexelCentre(const VolumeView& view, const Eigen::Vector3d& centre, double side, int texels, int row,
+Eigen::Vector3d TexelCenter(const VolumeView& view, const Eigen::Vector3d& centre, double side, int texels, int row,
                             int col);
 
 // Fills billboards, texels and billboards_before_pruning of every level of `volume`, whose

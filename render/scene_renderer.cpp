@@ -125,7 +125,7 @@ std::vector<Sphere> SceneRenderer::InstanceSpheres(double billboard_scale) const
   spheres.reserve(scene_.instances.size());
   for (const SceneInstance& instance : scene_.instances) {
     const TreeRenderer& renderer = *renderers_[instance.asset];
-    spheres.push_back({instance.transform.ToWorld(renderer.BoundingCentre()),
+    spheres.push_back({instance.transform.ToWorld(renderer.BoundingCenter()),
                        instance.transform.scale * renderer.BoundingRadius(billboard_scale)});
   }
   return spheres;

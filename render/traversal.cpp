@@ -94,7 +94,7 @@ struct Traverser {
   std::vector<uint32_t>* out;
   std::vector<uint8_t>* refined;
 
-  double Distance(uint32_t cell) const { return (index.Centre(cell) - camera.eye).norm(); }
+  double Distance(uint32_t cell) const { return (index.Center(cell) - camera.eye).norm(); }
 
   // Sorts `cells` far-to-near in place.
   void SortFarToNear(uint32_t* begin, uint32_t* end) const {
@@ -119,7 +119,7 @@ struct Traverser {
     const int previous = refined ? (*refined)[cell] : -1;
     const bool descend =
         has_children && ShouldDescend(lod, level, index.levels() - 1, size, texels,
-                                      LodDistance(lod.rule, camera, index.Centre(cell)), 0.5 * std::sqrt(3.0) * size,
+                                      LodDistance(lod.rule, camera, index.Center(cell)), 0.5 * std::sqrt(3.0) * size,
                                       camera.focal_pixels, previous);
     if (refined) {
       if (previous == 1 && !descend) ForgetSubtree(cell);  // stale history would bias a later refine

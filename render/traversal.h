@@ -29,7 +29,7 @@ class OctreeIndex {
   uint32_t CellCount() const { return uint32_t(level_of_.size()); }
   uint32_t FirstCell(int level) const { return first_cell_[level]; }
   int LevelOf(uint32_t cell) const { return level_of_[cell]; }
-  const Eigen::Vector3d& Centre(uint32_t cell) const { return centre_[cell]; }
+  const Eigen::Vector3d& Center(uint32_t cell) const { return centre_[cell]; }
   double CellSize(int level) const { return cell_size_[level]; }
   // Children (global indices) of a cell, in storage order.
   const uint32_t* ChildrenBegin(uint32_t cell) const { return children_.data() + child_offset_[cell]; }

@@ -141,7 +141,7 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
 
   std::vector<float> cells(size_t(index_.CellCount()) * 4);
   for (uint32_t c = 0; c < index_.CellCount(); ++c) {
-    const Eigen::Vector3d& p = index_.Centre(c);
+    const Eigen::Vector3d& p = index_.Center(c);
     cells[4 * c] = float(p.x()), cells[4 * c + 1] = float(p.y()), cells[4 * c + 2] = float(p.z());
     cells[4 * c + 3] = float(index_.CellSize(index_.LevelOf(c)));
   }

@@ -94,7 +94,7 @@ class TreeRenderer {
   const OctreeIndex& index() const { return index_; }
   // A sphere in the asset's frame that holds every billboard of every level (the root cube's, or
   // wider when billboards are scaled beyond their cells).
-  Eigen::Vector3d BoundingCentre() const { return centre_; }
+  Eigen::Vector3d BoundingCenter() const { return centre_; }
   double BoundingRadius(double billboard_scale) const;
   GpuMemory GpuBytes() const;
 

@@ -35,7 +35,7 @@ uniform int uRealistic;
 uniform int uObjectCount;
 uniform vec4 uObjectShape[kMaxObjects];  // centre x, y, z, horizontal radius
 uniform vec4 uObjectKind[kMaxObjects];   // kind (0 bush, 1 rock, 2 tree), vertical radius, trunk radius, tint
-uniform vec2 uCentre;                    // the tree's position on the ground
+uniform vec2 uCenter;                    // the tree's position on the ground
 uniform float uWallRadius;               // distance of the skyline
 
 uvec3 Pcg3d(uvec3 v) {
@@ -209,14 +209,14 @@ vec4 Objects(vec3 eye, vec3 direction) {
 // patches, and buildings between them. Returns (colour, 1) where the ray meets it below the
 // skyline, (0, 0) above; `t` is where the ray meets the cylinder (WallDistance).
 float WallDistance(vec3 eye, vec3 direction) {
-  vec2 o = eye.xy - uCentre, d = direction.xy;
+  vec2 o = eye.xy - uCenter, d = direction.xy;
   float a = dot(d, d), b = dot(o, d), k = dot(o, o) - uWallRadius * uWallRadius;
   return a > 1e-12 ? (-b + sqrt(max(b * b - a * k, 0.0))) / a : 1e30;
 }
 
 vec4 Skyline(vec3 eye, vec3 direction, float t) {
   vec3 p = eye + t * direction;
-  vec2 q = p.xy - uCentre;
+  vec2 q = p.xy - uCenter;
   float s = atan(q.y, q.x) * uWallRadius;  // arc length along the skyline, metres
   float R = uWallRadius;
   float footprint = t * uSampleAngle;
@@ -347,7 +347,7 @@ void StudioBackdrop::Draw(const View& view, const StudioLighting& lighting, int 
       glProgramUniform4fv(program_.id(), program_.Location("uObjectShape"), count, shapes.data());
       glProgramUniform4fv(program_.id(), program_.Location("uObjectKind"), count, kinds.data());
     }
-    program_.Set("uCentre", Eigen::Vector2f(centre_.cast<float>()));
+    program_.Set("uCenter", Eigen::Vector2f(centre_.cast<float>()));
     program_.Set("uWallRadius", static_cast<float>(clutter_.wall_radius));
   }
   program_.Use();

@@ -47,7 +47,7 @@ int BlobOf(const TrainingSet& set, const std::vector<int>& label, const float* c
 
 class KMeansPlusPlus : public ::testing::TestWithParam<bool> {};
 
-TEST_P(KMeansPlusPlus, PutsOneCentreInEveryBlob) {
+TEST_P(KMeansPlusPlus, PutsOneCenterInEveryBlob) {
   // The potential of a blob without a centre dwarfs everything else, so each new centre must land
   // in an empty blob; a seeding that failed to update the distances would pile them up.
   std::vector<int> label;
@@ -59,7 +59,7 @@ TEST_P(KMeansPlusPlus, PutsOneCentreInEveryBlob) {
   EXPECT_EQ(blobs.size(), 24u);
 }
 
-TEST_P(KMeansPlusPlus, SameSeedSameCentres) {
+TEST_P(KMeansPlusPlus, SameSeedSameCenters) {
   std::vector<int> label;
   const TrainingSet set = Blobs(8, 200, 16, GetParam(), &label);
   EXPECT_EQ(SeedKMeansPlusPlus(set, 100, 5).centres.codewords, SeedKMeansPlusPlus(set, 100, 5).centres.codewords);
@@ -85,7 +85,7 @@ TrainingSet Patches(size_t count, bool weighted, uint64_t seed) {
   return set;
 }
 
-TEST_P(KMeansPlusPlus, ReportsExactlyTheNearestCentres) {
+TEST_P(KMeansPlusPlus, ReportsExactlyTheNearestCenters) {
   const TrainingSet set = Patches(4000, GetParam(), 11);
   for (bool use_simd : {true, false}) {
     const Seeds seeds = SeedKMeansPlusPlus(set, 96, 3, 3, use_simd);
@@ -110,7 +110,7 @@ TEST(KMeansPlusPlusCounts, SameSeedsWhateverTheThreads) {
   EXPECT_EQ(single.nearest, threaded.nearest);
 }
 
-TEST(KMeansPlusPlusCounts, DuplicatesKeepTheLowestCentre) {
+TEST(KMeansPlusPlusCounts, DuplicatesKeepTheLowestCenter) {
   // Two distinct vectors, each many times: once both are centres the rest are duplicates.
   TrainingSet set;
   set.dimension = 4;
@@ -126,7 +126,7 @@ TEST(KMeansPlusPlusCounts, DuplicatesKeepTheLowestCentre) {
 INSTANTIATE_TEST_SUITE_P(PlainAndWeighted, KMeansPlusPlus, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "Weighted" : "Plain"; });
 
-TEST(KMeansPlusPlusCounts, NeverMoreCentresThanVectors) {
+TEST(KMeansPlusPlusCounts, NeverMoreCentersThanVectors) {
   std::vector<int> label;
   const TrainingSet set = Blobs(2, 3, 4, false, &label);
   EXPECT_EQ(SeedKMeansPlusPlus(set, 50, 1).centres.size(), 6u);

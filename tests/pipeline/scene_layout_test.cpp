@@ -68,7 +68,7 @@ TEST(SceneLayout, BadSurveysAreNamedByLineAndColumn) {
   EXPECT_NE(CsvError("").find("empty; expected a header"), std::string::npos);
 }
 
-TEST(SceneLayout, TheGridIsSquareAndCentred) {
+TEST(SceneLayout, TheGridIsSquareAndCentered) {
   const std::vector<ScenePlacement> grid = GridPlacements({"a", "b", "c", "d", "e"}, 10);
   ASSERT_EQ(grid.size(), 5u);  // 3 columns, 2 rows
   EXPECT_DOUBLE_EQ(grid[0].x, -10);

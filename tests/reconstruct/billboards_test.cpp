@@ -63,7 +63,7 @@ TEST(Billboards, PruningNeverHidesAVisibleTexel) {
           const double alpha = a.texels[(i * n * n + row * n + col) * 4 + 3] / 255.0;
           if (alpha == 0) continue;
           const VolumeView& view = full.views[b.view];
-          const Eigen::Vector3d p = TexelCentre(view, full.CellCenter(level, a.cells[b.cell]), full.CellSize(level), n, row, col);
+          const Eigen::Vector3d p = TexelCenter(view, full.CellCenter(level, a.cells[b.cell]), full.CellSize(level), n, row, col);
           const Ray ray{view.position, (p - view.position).normalized()};
           const double kept = testing::BillboardAlphaOnRay(pruned, level, b.cell, b.view, ray);
           if (kept > 0) continue;
@@ -89,9 +89,9 @@ TEST(Billboards, TexelZeroIsTopLeftInItsView) {
   const VolumeView frame = MakeVolumeView(view);
   Eigen::Vector2d first, last, right;
   const Eigen::Vector3d centre(0.5, 0.5, 0.5);
-  ASSERT_TRUE(view.WorldToPixel(TexelCentre(frame, centre, 0.5, 4, 0, 0), &first));
-  ASSERT_TRUE(view.WorldToPixel(TexelCentre(frame, centre, 0.5, 4, 3, 3), &last));
-  ASSERT_TRUE(view.WorldToPixel(TexelCentre(frame, centre, 0.5, 4, 0, 3), &right));
+  ASSERT_TRUE(view.WorldToPixel(TexelCenter(frame, centre, 0.5, 4, 0, 0), &first));
+  ASSERT_TRUE(view.WorldToPixel(TexelCenter(frame, centre, 0.5, 4, 3, 3), &last));
+  ASSERT_TRUE(view.WorldToPixel(TexelCenter(frame, centre, 0.5, 4, 0, 3), &right));
   EXPECT_LT(first.x(), last.x() - 5);  // columns along image +X
   EXPECT_LT(first.y(), last.y() - 5);  // rows along image +Y (down), i.e. row 0 at the top
   EXPECT_NEAR(first.y(), right.y(), 1e-6);

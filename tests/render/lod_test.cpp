@@ -42,7 +42,7 @@ TEST(Lod, LevelNeverIncreasesWithDistance) {
     for (uint32_t cell : cells) {
       const double half = 0.5 * index.CellSize(index.LevelOf(cell));
       for (uint32_t f = 0; f < finest_count; ++f) {
-        const Eigen::Vector3d d = (index.Centre(finest_first + f) - index.Centre(cell)).cwiseAbs();
+        const Eigen::Vector3d d = (index.Center(finest_first + f) - index.Center(cell)).cwiseAbs();
         if (d.maxCoeff() < half) covering[f] = index.LevelOf(cell);
       }
     }

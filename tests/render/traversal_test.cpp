@@ -43,7 +43,7 @@ struct Box {
 };
 Box CellBox(const OctreeIndex& index, uint32_t cell) {
   const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5 * index.CellSize(index.LevelOf(cell)));
-  return {index.Centre(cell) - half, index.Centre(cell) + half};
+  return {index.Center(cell) - half, index.Center(cell) + half};
 }
 
 // `earlier` (drawn first) is in front of `later` when they are disjoint and the eye is strictly

@@ -254,7 +254,7 @@ class OctreeIndex {
       }
     });
   }
-  Centre(c) { return [this.centre[3 * c], this.centre[3 * c + 1], this.centre[3 * c + 2]]; }
+  Center(c) { return [this.centre[3 * c], this.centre[3 * c + 1], this.centre[3 * c + 2]]; }
   // FindBillboard: tiles (colour | alpha << 16) of (cell, view), or -1 when that view was pruned.
   FindTiles(cell, view) {
     for (const b of this.billboards[cell]) if (b[0] === view) return (b[1] | (b[2] << 16)) >>> 0;
@@ -353,7 +353,7 @@ function LookAt(intrinsics, eye, target, up) {
   return { ...intrinsics, R, t: Scale([Dot(right, eye), Dot(down, eye), Dot(forward, eye)], -1) };
 }
 
-const CameraCentre = (cam) => Scale(Add(Add(Scale(cam.R[0], cam.t[0]), Scale(cam.R[1], cam.t[1])), Scale(cam.R[2], cam.t[2])), -1);
+const CameraCenter = (cam) => Scale(Add(Add(Scale(cam.R[0], cam.t[0]), Scale(cam.R[1], cam.t[1])), Scale(cam.R[2], cam.t[2])), -1);
 
 // OrbitCamerasAround for one azimuth: a pinhole whose field of view holds the sphere, times 1.1.
 function OrbitCamera(orbit, width, height) {
@@ -380,7 +380,7 @@ function Instance(asset, position, degrees, scale) {
 }
 
 function BoundingRadius(asset) { return asset.size * Math.max(0.5 * Math.sqrt(3), 0.5 * Math.sqrt(2)); }
-function BoundingCentre(asset) { return asset.origin.map((o) => o + 0.5 * asset.size); }
+function BoundingCenter(asset) { return asset.origin.map((o) => o + 0.5 * asset.size); }
 
 // Frustum::MayIntersect for a pinhole camera.
 function MayIntersect(cam, centre, radius) {
@@ -606,7 +606,7 @@ class TreeRenderer {
     this.gl = gl;
     this.asset = asset;
     this.index = new OctreeIndex(asset);
-    this.centre = BoundingCentre(asset);
+    this.centre = BoundingCenter(asset);
     this.program = Program(gl, "vtree billboards", kTreeVertex, kTreeFragment);
     const atlas = asset.atlas;
     this.atlas = gl.createTexture();
@@ -646,7 +646,7 @@ class TreeRenderer {
   // Plan + Draw: one instanced draw call for the tree. `lodState` is this instance's history.
   Draw(cam, instance, depth, lodState, tint) {
     const gl = this.gl, index = this.index;
-    const worldEye = CameraCentre(cam);
+    const worldEye = CameraCenter(cam);
     const eye = instance.ToAsset(worldEye);
     const views = SelectViews(this.asset.views, this.centre, eye);
     const cells = TraverseBackToFront(index, eye, 0.5 * (cam.fx + cam.fy), this.asset.texels, lodState);
@@ -657,7 +657,7 @@ class TreeRenderer {
       const a = index.FindTiles(cell, views.first), b = two ? index.FindTiles(cell, views.second) : -1;
       if (a < 0 && b < 0) continue;
       const level = index.levelOf[cell], n = stats.cells++;
-      cellData.set([...index.Centre(cell), index.cellSize[level]], 4 * n);
+      cellData.set([...index.Center(cell), index.cellSize[level]], 4 * n);
       tileData.set([Math.max(a, 0), Math.max(b, 0), (a >= 0 ? 1 : 0) | (b >= 0 ? 2 : 0), level], 4 * n);
       stats.billboards += (a >= 0) + (b >= 0);
       stats.minLevel = stats.minLevel < 0 ? level : Math.min(stats.minLevel, level);
@@ -730,7 +730,7 @@ class SceneRenderer {
     this.instances = data.instances.map((i) => Instance(i.asset, i.position, i.rotation, i.scale));
     this.lodStates = this.instances.map((i) => new Uint8Array(this.renderers[i.asset].index.cellCount));
     this.spheres = this.instances.map((i) => ({
-      centre: i.ToWorld(BoundingCentre(this.assets[i.asset])), radius: i.scale * BoundingRadius(this.assets[i.asset]),
+      centre: i.ToWorld(BoundingCenter(this.assets[i.asset])), radius: i.scale * BoundingRadius(this.assets[i.asset]),
     }));
     if (this.ground) this.groundProgram = Program(gl, "scene ground", kGroundVertex, kGroundFragment);
     this.groundVertexArray = gl.createVertexArray();
@@ -773,7 +773,7 @@ class SceneRenderer {
     gl.clearDepth(1);
     gl.depthMask(true);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    const eye = CameraCentre(cam);
+    const eye = CameraCenter(cam);
     const stats = { cells: 0, billboards: 0, minLevel: -1, maxLevel: -1, drawn: 0, culled: 0, views: null };
     let order = this.instances.map((_, i) => i);
     if (!this.single) order = order.filter((i) => MayIntersect(cam, this.spheres[i].centre, this.spheres[i].radius));

@@ -1,4 +1,4 @@
-#include "compress/centre_bounds.h"
+#include "compress/center_bounds.h"
 
 #include <algorithm>
 #include <cmath>
