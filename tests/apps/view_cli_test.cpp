@@ -14,6 +14,7 @@
 #include "core/image.h"
 #include "core/image_metrics.h"
 #include "pipeline/voltree_binary.h"
+#include "tiny_asset_suite.h"
 
 namespace voltree {
 namespace {
@@ -22,27 +23,10 @@ namespace fs = std::filesystem;
 
 constexpr double kMinPsnr = 35;
 
-class ViewWindow : public ::testing::Test {
+class ViewWindow : public test::TinyAssetSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new fs::path(fs::temp_directory_path() / ("voltree_view_" + std::to_string(::getpid())));
-    fs::remove_all(*dir_);
-    const std::string d = dir_->string();
-    build_status_ = test::Voltree("synth --tree oak --views 8 --size 96x96 --quiet -o " + d + "/capture && " +
-                                  VOLTREE_BINARY + " reconstruct " + d + "/capture --levels 4 --quiet && " +
-                                  VOLTREE_BINARY + " compress " + d + "/capture --quiet");
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*dir_);
-    delete dir_;
-  }
-  void SetUp() override {
-    ASSERT_EQ(std::system("command -v xvfb-run >/dev/null"), 0)
-        << "xvfb-run is not installed: run scripts/setup.sh, which installs Debian's xvfb with the other packages";
-    ASSERT_EQ(build_status_, 0) << "building the test asset failed";
-  }
-  static fs::path Dir() { return *dir_; }
-  static fs::path Asset() { return Dir() / "capture" / "tree.vtree"; }
+  static void SetUpTestSuite() { BuildTinyAsset("voltree_view_"); }
+  void SetUp() override { RequireToolAndAsset("xvfb-run", "xvfb"); }
 
   // Runs `voltree view INPUT` under Xvfb with `script`, screenshots into Dir()/NAME.
   static test::Outcome View(const std::string& input, const std::string& script, const std::string& name) {
@@ -68,13 +52,8 @@ class ViewWindow : public ::testing::Test {
     }
     return CompareViews(a, b).rgb_psnr;
   }
-
-  static fs::path* dir_;
-  static int build_status_;
 };
 
-fs::path* ViewWindow::dir_ = nullptr;
-int ViewWindow::build_status_ = -1;
 
 TEST_F(ViewWindow, ScreenshotMatchesRenderAndTintChangesIt) {
   const test::Outcome outcome = View(Asset().string(),

@@ -22,6 +22,7 @@
 #include "core/image.h"
 #include "core/image_metrics.h"
 #include "pipeline/voltree_binary.h"
+#include "tiny_asset_suite.h"
 
 namespace voltree {
 namespace {
@@ -71,28 +72,10 @@ View LookingAt(const std::string& name, const Eigen::Vector3d& eye, const Eigen:
   return view;
 }
 
-class WebPage : public ::testing::Test {
+class WebPage : public test::TinyAssetSuite {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new fs::path(fs::temp_directory_path() / ("voltree_web_" + std::to_string(::getpid())));
-    fs::remove_all(*dir_);
-    const std::string d = dir_->string();
-    build_status_ = test::Voltree("synth --tree oak --views 8 --size 96x96 --quiet -o " + d + "/capture && " +
-                                  VOLTREE_BINARY + " reconstruct " + d + "/capture --levels 4 --quiet && " +
-                                  VOLTREE_BINARY + " compress " + d + "/capture --quiet");
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*dir_);
-    delete dir_;
-  }
-  void SetUp() override {
-    ASSERT_EQ(std::system("command -v chromium >/dev/null"), 0)
-        << "chromium is not installed: run scripts/setup.sh, which installs Debian's chromium with the other packages";
-    ASSERT_EQ(build_status_, 0) << "building the test asset failed";
-  }
-
-  static fs::path Dir() { return *dir_; }
-  static fs::path Asset() { return Dir() / "capture" / "tree.vtree"; }
+  static void SetUpTestSuite() { BuildTinyAsset("voltree_web_"); }
+  void SetUp() override { RequireToolAndAsset("chromium", "chromium"); }
 
   // `voltree render` of one camera over grey (a fresh renderer: no LOD history, like a page load).
   static Image8 Render(const std::string& input, const View& view, const std::string& name) {
@@ -140,13 +123,8 @@ class WebPage : public ::testing::Test {
     if (a.width != b.width || a.height != b.height) return 0;
     return CompareViews(a, b).rgb_psnr;
   }
-
-  static fs::path* dir_;
-  static int build_status_;
 };
 
-fs::path* WebPage::dir_ = nullptr;
-int WebPage::build_status_ = -1;
 
 TEST_F(WebPage, MatchesRenderFromTwoCameras) {
   const fs::path page = WritePage(Asset().string(), "asset");
