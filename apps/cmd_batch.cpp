@@ -38,8 +38,7 @@ void AddBatchCommand(CLI::App& app) {
   };
   auto args = std::make_shared<Arguments>();
   BatchOptions& o = args->options;
-  command->add_option("ROOT", args->root, "Folder of capture workspaces, one per tree: ROOT/TREE/images/")
-      ->required();
+  command->add_option("ROOT", args->root, "Folder of capture workspaces, one per tree: ROOT/TREE/images/")->required();
   auto* jobs = AddOption(*command, "--jobs", o.jobs);
   AddOption(*command, "--profile", o.profile);
   AddFlag(*command, "--dry-run", o.dry_run);
@@ -56,14 +55,17 @@ void AddBatchCommand(CLI::App& app) {
     const BatchResult result = RunBatch(options, progress);
     std::printf("%s%s\n", options.dry_run ? "planned " : "", result.jobs.c_str());
     std::printf("%s", FormatBatchSummary(result.rows).c_str());
-    if (!result.scene.empty()) std::printf("scene: %s (%d trees)\n", result.scene.string().c_str(),
-                                           result.captures);
-    else if (!result.scene_log.empty()) std::printf("scene: failed; log: %s\n", result.scene_log.string().c_str());
-    else if (!options.dry_run) std::printf("scene: not written (it needs every capture's asset)\n");
+    if (!result.scene.empty())
+      std::printf("scene: %s (%d trees)\n", result.scene.string().c_str(), result.captures);
+    else if (!result.scene_log.empty())
+      std::printf("scene: failed; log: %s\n", result.scene_log.string().c_str());
+    else if (!options.dry_run)
+      std::printf("scene: not written (it needs every capture's asset)\n");
     std::printf("snakemake log: %s\n", result.snakemake_log.string().c_str());
     std::fflush(stdout);  // the table before the error line
     if (result.failed > 0)
-      Fail(result.failed, " of ", result.captures, " captures failed; their logs are named above. Run the same "
+      Fail(result.failed, " of ", result.captures,
+           " captures failed; their logs are named above. Run the same "
            "command again after fixing them: what was built is kept");
     if (!result.scene_log.empty())
       Fail("the scene of the batch failed (", result.scene_log.string(), "); every asset was built");

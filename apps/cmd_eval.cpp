@@ -21,14 +21,17 @@ void AddEvalCommand(CLI::App& app) {
       "mattes: self-consistency), with the renderer's own LOD and with each octree level forced. Metrics: RGB "
       "PSNR and SSIM over a fixed grey background, alpha PSNR, precision and recall of covered pixels, "
       "multi-scale RMS. Writes REPORT/metrics.json, REPORT/index.html (truth | voltree | difference per held-out "
-      "view, with the asset's web page beside the truth, plots drawn by gnuplot when installed) and REPORT/eval/; prints a table and the page's path");
+      "view, with the asset's web page beside the truth, plots drawn by gnuplot when installed) and REPORT/eval/; "
+      "prints a table and the page's path");
   struct Arguments {
     EvaluateOptions options;
     bool quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   EvaluateOptions& o = args->options;
-  command->add_option("DIR", o.workspace, "Capture workspace (sparse/, foreground/ or images/+mattes/, truth/, tree.vtree)")
+  command
+      ->add_option("DIR", o.workspace,
+                   "Capture workspace (sparse/, foreground/ or images/+mattes/, truth/, tree.vtree)")
       ->required();
   AddOption(*command, "--asset", o.asset);
   AddOption(*command, "--report", o.report);

@@ -13,8 +13,9 @@ namespace voltree::app {
 
 void AddInfoCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
-      "info", "Print a .vtree asset's levels, cells and billboards per level, views, codebook sizes and bytes by "
-              "category (uncompressed textures, VQ, GPU-resident, on disk); checks it fully on the way");
+      "info",
+      "Print a .vtree asset's levels, cells and billboards per level, views, codebook sizes and bytes by "
+      "category (uncompressed textures, VQ, GPU-resident, on disk); checks it fully on the way");
   auto file = std::make_shared<std::string>();
   command->add_option("FILE", *file, "A .vtree asset")->required();
   command->callback([file] {

@@ -11,10 +11,10 @@
 namespace voltree::app {
 
 void AddMatteCommand(CLI::App& app) {
-  auto* command = app.add_subcommand(
-      "matte",
-      "Cut the tree out of every photo: DIR/images/NAME -> DIR/mattes/NAME.png (8-bit alpha) and "
-      "DIR/foreground/NAME.png (RGBA, premultiplied colour)");
+  auto* command =
+      app.add_subcommand("matte",
+                         "Cut the tree out of every photo: DIR/images/NAME -> DIR/mattes/NAME.png (8-bit alpha) and "
+                         "DIR/foreground/NAME.png (RGBA, premultiplied colour)");
   struct Arguments {
     std::string dir;
     MatteWorkspaceOptions options;

@@ -28,9 +28,7 @@ void CheckRenderLevel(const std::filesystem::path& asset, int level) {
 
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {
   const std::string output = job.output.string(), turntable = job.turntable.string();
-  const std::string where = output.empty()      ? turntable
-                            : turntable.empty() ? output
-                                                : output + " and " + turntable;
+  const std::string where = output.empty() ? turntable : turntable.empty() ? output : output + " and " + turntable;
   std::printf("%zu frames -> %s (%s)\n", result.frames.size(), where.c_str(), result.renderer.c_str());
   std::printf("median %.2f ms per frame, %.0f billboards per frame\n", result.median_ms, result.mean_billboards);
   if (IsSceneFile(job.asset))
@@ -45,7 +43,8 @@ void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& resul
 void AddRenderCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "render",
-      "Render a .vtree asset or a scene .json (billboards of the two input views nearest in angle, back-to-front octree "
+      "Render a .vtree asset or a scene .json (billboards of the two input views nearest in angle, back-to-front "
+      "octree "
       "traversal, LOD; scenes: ground plane, frustum culling, instances back to front) into straight-alpha RGBA PNGs "
       "and/or an .mp4 turntable; prints the median ms per frame, billboards per frame and GPU memory");
   struct Arguments {
@@ -60,7 +59,9 @@ void AddRenderCommand(CLI::App& app) {
   AddOption(*command, "--cameras", o.cameras)->excludes(orbit);
   AddParsedOption<RenderJobOptions>(
       *command, "--size", o,
-      [](const std::string& text, RenderJobOptions& job) { std::tie(job.width, job.height) = ParseSize("--size", text); },
+      [](const std::string& text, RenderJobOptions& job) {
+        std::tie(job.width, job.height) = ParseSize("--size", text);
+      },
       "");
   AddRenderOptions(*command, o.render);
   AddOption(*command, "--output", o.output, "Output folder (built aside, renamed into place)");

@@ -17,8 +17,10 @@ namespace {
 void PrintStageTimes(const RunResult& result) {
   std::printf("%-12s %9s\n", "stage", "seconds");
   for (const StageTime& stage : result.stages) {
-    if (stage.what == "ran") std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
-    else std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
+    if (stage.what == "ran")
+      std::printf("%-12s %9.1f\n", stage.stage.c_str(), stage.seconds);
+    else
+      std::printf("%-12s %9s  (%s)\n", stage.stage.c_str(), "-", stage.what.c_str());
   }
 }
 

@@ -8,271 +8,301 @@ namespace {
 // Commands' own.
 std::vector<OptionSpec> CommandFlags() {
   return {
-    {"-o,--output", {}, "Where to write", true},
-    {"--force", {}, "Replace what an earlier run wrote", true},
-    {"--quiet", {}, "No progress lines"},
-    {"--threads",
-     {"ReconstructOptions.threads", "MatteWorkspaceOptions.threads"},
-     "Worker threads (0: all cores); the output does not depend on them"},
+      {"-o,--output", {}, "Where to write", true},
+      {"--force", {}, "Replace what an earlier run wrote", true},
+      {"--quiet", {}, "No progress lines"},
+      {"--threads",
+       {"ReconstructOptions.threads", "MatteWorkspaceOptions.threads"},
+       "Worker threads (0: all cores); the output does not depend on them"},
   };
 }
 
 // The tree photographed (synth, demo).
 std::vector<OptionSpec> TreeFlags() {
   return {
-    {"--tree", {"TreeSource.tree"}, "A preset (oak, pine, young-oak) or a mesh file (.gltf, .glb, .obj)"},
-    {"--seed", {"TreeSource.seed", "StudioOptions.seed"}, "Seed of the procedural tree, the ground, sky and clutter, and the rings' rotation"},
-    {"--mesh-up", {"TreeSource.up"}, "Up axis of a mesh file: y (glTF convention) or z"},
+      {"--tree", {"TreeSource.tree"}, "A preset (oak, pine, young-oak) or a mesh file (.gltf, .glb, .obj)"},
+      {"--seed",
+       {"TreeSource.seed", "StudioOptions.seed"},
+       "Seed of the procedural tree, the ground, sky and clutter, and the rings' rotation"},
+      {"--mesh-up", {"TreeSource.up"}, "Up axis of a mesh file: y (glTF convention) or z"},
   };
 }
 
 // The photo studio (synth, demo).
 std::vector<OptionSpec> StudioFlags() {
   return {
-    {"--views", {"StudioOptions.views"}, "Input photos, spread over the camera rings"},
-    {"--held-out", {"StudioOptions.held_out"}, "Held-out truth views, between the rings at other azimuths"},
-    {"--rings", {"StudioOptions.rings"}, "Camera rings at elevations from --min-elevation to 35 degrees"},
-    {"--size",
-     {"StudioOptions.width", "StudioOptions.height", "RenderJobOptions.width", "RenderJobOptions.height",
-      "ViewerOptions.width", "ViewerOptions.height"},
-     "Image size WIDTHxHEIGHT in pixels, or one number for a square"},
-    {"--supersample", {"StudioOptions.supersample"}, "Samples per pixel and axis (mattes get 1/S^2 alpha steps)"},
-    {"--camera", {"StudioOptions.camera_model"}, "Camera model of the photos: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV"},
-    {"--distortion",
-     {"StudioOptions.distortion"},
-     "Comma-separated distortion parameters of the camera model (SIMPLE_RADIAL: k; RADIAL: k1,k2; OPENCV: "
-     "k1,k2,p1,p2); default none"},
-    {"--fov", {"StudioOptions.fov_degrees"}, "Field of view across the smaller image side, degrees"},
-    {"--min-elevation",
-     {"StudioOptions.min_elevation_degrees"},
-     "Elevation of the lowest camera ring in degrees, seen from the middle of the tree's bounds (the highest is "
-     "35); 5 looks almost level at the tree, as a person holding the camera would"},
-    {"--backdrop",
-     {"StudioOptions.backdrop"},
-     "What stands behind the tree: realistic (a place: skyline, bushes, rocks, other trees) or plain (sky and "
-     "textured ground only); mattes and truth are the tree's alone either way"},
+      {"--views", {"StudioOptions.views"}, "Input photos, spread over the camera rings"},
+      {"--held-out", {"StudioOptions.held_out"}, "Held-out truth views, between the rings at other azimuths"},
+      {"--rings", {"StudioOptions.rings"}, "Camera rings at elevations from --min-elevation to 35 degrees"},
+      {"--size",
+       {"StudioOptions.width", "StudioOptions.height", "RenderJobOptions.width", "RenderJobOptions.height",
+        "ViewerOptions.width", "ViewerOptions.height"},
+       "Image size WIDTHxHEIGHT in pixels, or one number for a square"},
+      {"--supersample", {"StudioOptions.supersample"}, "Samples per pixel and axis (mattes get 1/S^2 alpha steps)"},
+      {"--camera",
+       {"StudioOptions.camera_model"},
+       "Camera model of the photos: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV"},
+      {"--distortion",
+       {"StudioOptions.distortion"},
+       "Comma-separated distortion parameters of the camera model (SIMPLE_RADIAL: k; RADIAL: k1,k2; OPENCV: "
+       "k1,k2,p1,p2); default none"},
+      {"--fov", {"StudioOptions.fov_degrees"}, "Field of view across the smaller image side, degrees"},
+      {"--min-elevation",
+       {"StudioOptions.min_elevation_degrees"},
+       "Elevation of the lowest camera ring in degrees, seen from the middle of the tree's bounds (the highest is "
+       "35); 5 looks almost level at the tree, as a person holding the camera would"},
+      {"--backdrop",
+       {"StudioOptions.backdrop"},
+       "What stands behind the tree: realistic (a place: skyline, bushes, rocks, other trees) or plain (sky and "
+       "textured ground only); mattes and truth are the tree's alone either way"},
   };
 }
 
 // Calibration (calibrate, run).
 std::vector<OptionSpec> CalibrateFlags() {
   return {
-    {"--camera-model",
-     {"CalibrateOptions.camera_model"},
-     "COLMAP camera model shared by all photos: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV"},
-    {"--camera-params",
-     {"CalibrateOptions.camera_params"},
-     "Known intrinsics in COLMAP's order, comma separated (e.g. PINHOLE: fx,fy,cx,cy); kept fixed"},
-    {"--max-image-size", {"CalibrateOptions.max_image_size"}, "COLMAP feature extraction: longest side in pixels"},
-    {"--max-features", {"CalibrateOptions.max_features"}, "COLMAP feature extraction: SIFT features per photo at most"},
-    {"--matcher", {"CalibrateOptions.matcher"}, "COLMAP matcher: exhaustive, or sequential for photos taken in order along a walk"},
-    {"--min-registered", {"CalibrateOptions.min_registered"}, "Fraction of the photos that must get a camera"},
-    {"--mask",
-     {"CalibrateOptions.mask"},
-     "Where features may come from when mattes/ exists: all (ground and surroundings help), tree (the tree "
-     "only), near (the tree and a band around it)"},
-    {"--up", {"CalibrateOptions.up"}, "World up direction x,y,z in COLMAP's frame (default: from the cameras)"},
-    {"--height", {"CalibrateOptions.height_metres"}, "Tree height in metres: scale the scene to metres"},
-    {"--import",
-     {"CalibrateOptions.import_model"},
-     "Use this existing COLMAP model (text or binary) instead of running COLMAP; it is normalized"},
-    {"--known-cameras",
-     {"CalibrateOptions.known_cameras"},
-     "Use this COLMAP model (text or binary) as is: its cameras are already in the tree frame, metres"},
-    {"--hull-resolution", {"HullOptions.resolution"}, "Voxels along the longest side of the visual hull that bounds the tree"},
-    {"--no-affine",
-     {"CalibrateOptions.affine_features"},
-     "Plain SIFT instead of affine-covariant SIFT (faster; photos from low and high rings then rarely match)"},
-    {"--no-guided", {"CalibrateOptions.guided_matching"}, "No guided matching (re-matching under the found geometry)"},
+      {"--camera-model",
+       {"CalibrateOptions.camera_model"},
+       "COLMAP camera model shared by all photos: SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV"},
+      {"--camera-params",
+       {"CalibrateOptions.camera_params"},
+       "Known intrinsics in COLMAP's order, comma separated (e.g. PINHOLE: fx,fy,cx,cy); kept fixed"},
+      {"--max-image-size", {"CalibrateOptions.max_image_size"}, "COLMAP feature extraction: longest side in pixels"},
+      {"--max-features",
+       {"CalibrateOptions.max_features"},
+       "COLMAP feature extraction: SIFT features per photo at most"},
+      {"--matcher",
+       {"CalibrateOptions.matcher"},
+       "COLMAP matcher: exhaustive, or sequential for photos taken in order along a walk"},
+      {"--min-registered", {"CalibrateOptions.min_registered"}, "Fraction of the photos that must get a camera"},
+      {"--mask",
+       {"CalibrateOptions.mask"},
+       "Where features may come from when mattes/ exists: all (ground and surroundings help), tree (the tree "
+       "only), near (the tree and a band around it)"},
+      {"--up", {"CalibrateOptions.up"}, "World up direction x,y,z in COLMAP's frame (default: from the cameras)"},
+      {"--height", {"CalibrateOptions.height_metres"}, "Tree height in metres: scale the scene to metres"},
+      {"--import",
+       {"CalibrateOptions.import_model"},
+       "Use this existing COLMAP model (text or binary) instead of running COLMAP; it is normalized"},
+      {"--known-cameras",
+       {"CalibrateOptions.known_cameras"},
+       "Use this COLMAP model (text or binary) as is: its cameras are already in the tree frame, metres"},
+      {"--hull-resolution",
+       {"HullOptions.resolution"},
+       "Voxels along the longest side of the visual hull that bounds the tree"},
+      {"--no-affine",
+       {"CalibrateOptions.affine_features"},
+       "Plain SIFT instead of affine-covariant SIFT (faster; photos from low and high rings then rarely match)"},
+      {"--no-guided",
+       {"CalibrateOptions.guided_matching"},
+       "No guided matching (re-matching under the found geometry)"},
   };
 }
 
 // Matting (matte, run).
 std::vector<OptionSpec> MatteFlags() {
   return {
-    {"--refine",
-     {"MatteOptions.refine"},
-     "How the unknown band of a matte is solved: infoflow (OpenCV alphamat, most accurate), guided (guided "
-     "filter, fastest), none (first estimate only)"},
-    {"--horizon",
-     {"MatteOptions.horizon"},
-     "Horizon row as a fraction of the photo height from the top (0..1); default: estimated"},
-    {"--band", {"MatteOptions.band_radius"}, "Unknown band half-width in pixels around ground edges (0: auto)"},
-    {"--mattes",
-     {"MatteWorkspaceOptions.user_mattes"},
-     "Use these mattes instead (folder of PNG alpha or grey images named like the photos); they are checked, "
-     "converted and their foreground colours computed"},
+      {"--refine",
+       {"MatteOptions.refine"},
+       "How the unknown band of a matte is solved: infoflow (OpenCV alphamat, most accurate), guided (guided "
+       "filter, fastest), none (first estimate only)"},
+      {"--horizon",
+       {"MatteOptions.horizon"},
+       "Horizon row as a fraction of the photo height from the top (0..1); default: estimated"},
+      {"--band", {"MatteOptions.band_radius"}, "Unknown band half-width in pixels around ground edges (0: auto)"},
+      {"--mattes",
+       {"MatteWorkspaceOptions.user_mattes"},
+       "Use these mattes instead (folder of PNG alpha or grey images named like the photos); they are checked, "
+       "converted and their foreground colours computed"},
   };
 }
 
 // Reconstruction (reconstruct, run, demo).
 std::vector<OptionSpec> ReconstructFlags() {
   return {
-    {"--levels",
-     {"ReconstructOptions.levels"},
-     "Octree levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as "
-     "the photos fill (a finest texel covers about one photo pixel)"},
-    {"--branching", {"ReconstructOptions.branching"}, "Cells per axis per subdivision: 2 (octree) or 3 (tri-grid, Reche 2004)"},
-    {"--texels", {"ReconstructOptions.texels"}, "Billboard textures are texels x texels (8 in Reche 2004)"},
-    {"--margin", {"ReconstructOptions.margin"}, "Root cube margin per side, as a fraction of the bounds' largest extent"},
-    {"--carve-alpha", {"ReconstructOptions.carve_alpha"}, "Alpha at or below which a pixel is empty for visual-hull carving"},
-    {"--solver",
-     {"OpacityOptions.solver"},
-     "Opacity solver: sart (streamed SART) or ceres (bounded least squares, small volumes only)"},
-    {"--iterations", {"SartOptions.iterations"}, "SART iterations per level"},
-    {"--relaxation", {"SartOptions.relaxation"}, "SART relaxation lambda, in (0, 2)"},
-    {"--ceres-iterations", {"CeresSolveOptions.iterations"}, "Ceres iterations per level (--solver ceres)"},
-    {"--huber", {"CeresSolveOptions.huber"}, "Huber loss scale on the weighted ray residual (--solver ceres; 0: none)"},
-    {"--refine-depth",
-     {"OpacityOptions.refine_min_optical_depth"},
-     "Refine a cell only when sigma x cell edge (its optical depth) reaches this (0: every cell the visual hull "
-     "keeps)"},
-    {"--prune", {"BillboardOptions.prune"}, "Hide a texel when the alpha accumulated in front of its cell exceeds this"},
-    {"--billboard-scale",
-     {"BillboardOptions.scale", "BillboardFitOptions.billboard_scale", "TreeRenderOptions.billboard_scale"},
-     "Billboard side / cell edge (render: as given to reconstruct)"},
-    {"--no-fit",
-     {"BillboardFitOptions.enabled"},
-     "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)"},
-    {"--fit-iterations", {"BillboardFitOptions.iterations"}, "Gauss-Newton steps of the billboard fit per level and view"},
-    {"--fit-prior",
-     {"BillboardFitOptions.prior"},
-     "How strongly the billboard fit keeps the tomography's texels where the photos do not decide"},
-    {"--fit-neighbours",
-     {"BillboardFitOptions.neighbours"},
-     "Also fit each view's billboards to this many nearest photos, where the renderer blends them"},
-    {"--fit-neighbour-weight",
-     {"BillboardFitOptions.neighbour_weight"},
-     "Weight of each neighbouring photo against the view's own in the billboard fit"},
+      {"--levels",
+       {"ReconstructOptions.levels"},
+       "Octree levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as "
+       "the photos fill (a finest texel covers about one photo pixel)"},
+      {"--branching",
+       {"ReconstructOptions.branching"},
+       "Cells per axis per subdivision: 2 (octree) or 3 (tri-grid, Reche 2004)"},
+      {"--texels", {"ReconstructOptions.texels"}, "Billboard textures are texels x texels (8 in Reche 2004)"},
+      {"--margin",
+       {"ReconstructOptions.margin"},
+       "Root cube margin per side, as a fraction of the bounds' largest extent"},
+      {"--carve-alpha",
+       {"ReconstructOptions.carve_alpha"},
+       "Alpha at or below which a pixel is empty for visual-hull carving"},
+      {"--solver",
+       {"OpacityOptions.solver"},
+       "Opacity solver: sart (streamed SART) or ceres (bounded least squares, small volumes only)"},
+      {"--iterations", {"SartOptions.iterations"}, "SART iterations per level"},
+      {"--relaxation", {"SartOptions.relaxation"}, "SART relaxation lambda, in (0, 2)"},
+      {"--ceres-iterations", {"CeresSolveOptions.iterations"}, "Ceres iterations per level (--solver ceres)"},
+      {"--huber",
+       {"CeresSolveOptions.huber"},
+       "Huber loss scale on the weighted ray residual (--solver ceres; 0: none)"},
+      {"--refine-depth",
+       {"OpacityOptions.refine_min_optical_depth"},
+       "Refine a cell only when sigma x cell edge (its optical depth) reaches this (0: every cell the visual hull "
+       "keeps)"},
+      {"--prune",
+       {"BillboardOptions.prune"},
+       "Hide a texel when the alpha accumulated in front of its cell exceeds this"},
+      {"--billboard-scale",
+       {"BillboardOptions.scale", "BillboardFitOptions.billboard_scale", "TreeRenderOptions.billboard_scale"},
+       "Billboard side / cell edge (render: as given to reconstruct)"},
+      {"--no-fit",
+       {"BillboardFitOptions.enabled"},
+       "Keep the tomography's billboards: do not fit them to the photos (faster; to compare)"},
+      {"--fit-iterations",
+       {"BillboardFitOptions.iterations"},
+       "Gauss-Newton steps of the billboard fit per level and view"},
+      {"--fit-prior",
+       {"BillboardFitOptions.prior"},
+       "How strongly the billboard fit keeps the tomography's texels where the photos do not decide"},
+      {"--fit-neighbours",
+       {"BillboardFitOptions.neighbours"},
+       "Also fit each view's billboards to this many nearest photos, where the renderer blends them"},
+      {"--fit-neighbour-weight",
+       {"BillboardFitOptions.neighbour_weight"},
+       "Weight of each neighbouring photo against the view's own in the billboard fit"},
   };
 }
 
 // Compression (compress, run, demo).
 std::vector<OptionSpec> CompressFlags() {
   return {
-    {"--codebook", {"CompressOptions.colour_codebook"}, "Colour codebook size (codewords of texels x texels)"},
-    {"--alpha-codebook", {"CompressOptions.alpha_codebook"}, "Alpha codebook size"},
-    {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
-    {"--gla",
-     {"CompressOptions.rule"},
-     "Codeword rule: modified (the cluster member closest to the centroid, Linz 2006) or classic (the centroid)"},
-    {"--alpha-weighted",
-     {"CompressOptions.alpha_weighted"},
-     "Weight colour distances by texel alpha, so invisible texels do not steer the colour codebook"},
-    {"--gla-tolerance", {"CompressOptions.tolerance"}, "Stop GLA when the relative distortion drop is below this"},
-    {"--gla-iterations", {"CompressOptions.max_iterations"}, "At most this many GLA iterations"},
-    {"--gla-seed", {"CompressOptions.seed"}, "Seed of the codebooks' k-means++ initialization"},
-    {"--zstd", {"CompressWorkspaceOptions.zstd"}, "Compress the asset's chunks with zstd on disk"},
+      {"--codebook", {"CompressOptions.colour_codebook"}, "Colour codebook size (codewords of texels x texels)"},
+      {"--alpha-codebook", {"CompressOptions.alpha_codebook"}, "Alpha codebook size"},
+      {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
+      {"--gla",
+       {"CompressOptions.rule"},
+       "Codeword rule: modified (the cluster member closest to the centroid, Linz 2006) or classic (the centroid)"},
+      {"--alpha-weighted",
+       {"CompressOptions.alpha_weighted"},
+       "Weight colour distances by texel alpha, so invisible texels do not steer the colour codebook"},
+      {"--gla-tolerance", {"CompressOptions.tolerance"}, "Stop GLA when the relative distortion drop is below this"},
+      {"--gla-iterations", {"CompressOptions.max_iterations"}, "At most this many GLA iterations"},
+      {"--gla-seed", {"CompressOptions.seed"}, "Seed of the codebooks' k-means++ initialization"},
+      {"--zstd", {"CompressWorkspaceOptions.zstd"}, "Compress the asset's chunks with zstd on disk"},
   };
 }
 
 // Renders (render, run, demo).
 std::vector<OptionSpec> RenderFlags() {
   return {
-    {"--orbit",
-     {"OrbitFramesOptions.frames", "RenderJobOptions.orbit"},
-     "Frames on a circle about the tree at the input views' mean distance and elevation (run, demo: into "
-     "report/orbit/, 0: none)"},
-    {"--orbit-size", {"OrbitFramesOptions.size"}, "Orbit frame side in pixels (square)"},
-    {"--cameras",
-     {"RenderJobOptions.cameras"},
-     "COLMAP text model folder (cameras.txt, images.txt); each frame is named after its image"},
-    {"--assets", {"RenderJobOptions.asset_folder", "ViewerOptions.asset_folder", "WebPageOptions.asset_folder"}, "Scenes: folder to look their assets up in (default: the scene's folder)"},
-    {"--level", {"LodOptions.forced_level"}, "Draw only this octree level (default: LOD)"},
-    {"--lod",
-     {"LodOptions.rule"},
-     "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view direction)"},
-    {"--texel-pixels", {"LodOptions.max_texel_pixels"}, "LOD: descend while a billboard texel covers more pixels than this"},
-    {"--tint-levels", {"TreeRenderOptions.tint_levels"}, "Colour billboards by octree level (to see the LOD)"},
-    {"--background", {"TreeRenderOptions.background", "ViewerOptions.background"}, "Background colour R,G,B 0..255, opaque"},
-    {"--turntable",
-     {"RenderJobOptions.turntable"},
-     "Also (or only) encode the orbit frames as an H.264 .mp4 at 30 fps over the background (grey when "
-     "transparent); needs ffmpeg"},
+      {"--orbit",
+       {"OrbitFramesOptions.frames", "RenderJobOptions.orbit"},
+       "Frames on a circle about the tree at the input views' mean distance and elevation (run, demo: into "
+       "report/orbit/, 0: none)"},
+      {"--orbit-size", {"OrbitFramesOptions.size"}, "Orbit frame side in pixels (square)"},
+      {"--cameras",
+       {"RenderJobOptions.cameras"},
+       "COLMAP text model folder (cameras.txt, images.txt); each frame is named after its image"},
+      {"--assets",
+       {"RenderJobOptions.asset_folder", "ViewerOptions.asset_folder", "WebPageOptions.asset_folder"},
+       "Scenes: folder to look their assets up in (default: the scene's folder)"},
+      {"--level", {"LodOptions.forced_level"}, "Draw only this octree level (default: LOD)"},
+      {"--lod",
+       {"LodOptions.rule"},
+       "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view direction)"},
+      {"--texel-pixels",
+       {"LodOptions.max_texel_pixels"},
+       "LOD: descend while a billboard texel covers more pixels than this"},
+      {"--tint-levels", {"TreeRenderOptions.tint_levels"}, "Colour billboards by octree level (to see the LOD)"},
+      {"--background",
+       {"TreeRenderOptions.background", "ViewerOptions.background"},
+       "Background colour R,G,B 0..255, opaque"},
+      {"--turntable",
+       {"RenderJobOptions.turntable"},
+       "Also (or only) encode the orbit frames as an H.264 .mp4 at 30 fps over the background (grey when "
+       "transparent); needs ffmpeg"},
   };
 }
 
 // Whole runs (run, demo).
 std::vector<OptionSpec> RunFlags() {
   return {
-    {"--no-guards",
-     {"RunOptions.guards"},
-     "Skip the guards that stop a run, writing no asset, when mattes cover most of a photo or almost nothing, "
-     "disagree with each other through the cameras, or are not reproduced by the reconstruction (to inspect "
-     "what such input gives)"},
-    {"--no-eval", {"DemoOptions.evaluate"}, "Skip the evaluation report (default: evaluate)"},
-    {"--colmap",
-     {"DemoOptions.colmap"},
-     "Calibrate the photos with COLMAP (SIFT on the CPU, about a minute) instead of using the studio's true "
-     "cameras; the true input cameras are kept in truth/input_sparse/ and the held-out cameras are moved into "
-     "COLMAP's frame by the similarity fitted between the two, so the evaluation includes calibration error; the "
-     "lower camera ring is raised to 20 degrees, as COLMAP registers grazing views of the ground poorly (default: "
-     "true cameras)"},
-    {"--recheck",
-     {},
-     "Check the existing mattes against each other through the cameras in sparse/ and matte again, inside the "
-     "visual hull of the others, the photos that disagree (what 'run' does with photos alone); their mattes and "
-     "foregrounds are replaced"},
+      {"--no-guards",
+       {"RunOptions.guards"},
+       "Skip the guards that stop a run, writing no asset, when mattes cover most of a photo or almost nothing, "
+       "disagree with each other through the cameras, or are not reproduced by the reconstruction (to inspect "
+       "what such input gives)"},
+      {"--no-eval", {"DemoOptions.evaluate"}, "Skip the evaluation report (default: evaluate)"},
+      {"--colmap",
+       {"DemoOptions.colmap"},
+       "Calibrate the photos with COLMAP (SIFT on the CPU, about a minute) instead of using the studio's true "
+       "cameras; the true input cameras are kept in truth/input_sparse/ and the held-out cameras are moved into "
+       "COLMAP's frame by the similarity fitted between the two, so the evaluation includes calibration error; the "
+       "lower camera ring is raised to 20 degrees, as COLMAP registers grazing views of the ground poorly (default: "
+       "true cameras)"},
+      {"--recheck",
+       {},
+       "Check the existing mattes against each other through the cameras in sparse/ and matte again, inside the "
+       "visual hull of the others, the photos that disagree (what 'run' does with photos alone); their mattes and "
+       "foregrounds are replaced"},
   };
 }
 
 // Many workspaces (batch, scene).
 std::vector<OptionSpec> BatchFlags() {
   return {
-    {"-j,--jobs",
-     {"BatchOptions.jobs"},
-     "Jobs at once; on this machine its cores are shared between them (with --profile: jobs queued at once; "
-     "default: the profile's)"},
-    {"--profile",
-     {"BatchOptions.profile"},
-     "Snakemake profile (a folder with config.yaml, or a name in ~/.config/snakemake/) that sends the jobs to a "
-     "cluster"},
-    {"-n,--dry-run", {"BatchOptions.dry_run"}, "Print the jobs that would run and the captures' state; run nothing"},
-    {"--positions", {"SceneLayoutOptions.positions"}, "Survey CSV: tree, x, y[, rotation][, scale]"},
-    {"--spacing",
-     {"SceneLayoutOptions.spacing"},
-     "Grid spacing in the assets' units (0: 1.25 times the widest asset's footprint)"},
+      {"-j,--jobs",
+       {"BatchOptions.jobs"},
+       "Jobs at once; on this machine its cores are shared between them (with --profile: jobs queued at once; "
+       "default: the profile's)"},
+      {"--profile",
+       {"BatchOptions.profile"},
+       "Snakemake profile (a folder with config.yaml, or a name in ~/.config/snakemake/) that sends the jobs to a "
+       "cluster"},
+      {"-n,--dry-run", {"BatchOptions.dry_run"}, "Print the jobs that would run and the captures' state; run nothing"},
+      {"--positions", {"SceneLayoutOptions.positions"}, "Survey CSV: tree, x, y[, rotation][, scale]"},
+      {"--spacing",
+       {"SceneLayoutOptions.spacing"},
+       "Grid spacing in the assets' units (0: 1.25 times the widest asset's footprint)"},
   };
 }
 
 // The desktop viewer (view).
 std::vector<OptionSpec> ViewerFlags() {
   return {
-    {"--script",
-     {"ViewerOptions.script"},
-     "Scripted events, one a line: SECONDS drag|pan DX DY, scroll STEPS, key K, screenshot, quit; the session ends "
-     "after the last one"},
-    {"--no-panel", {"ViewerOptions.panel"}, "No statistics panel"},
+      {"--script",
+       {"ViewerOptions.script"},
+       "Scripted events, one a line: SECONDS drag|pan DX DY, scroll STEPS, key K, screenshot, quit; the session ends "
+       "after the last one"},
+      {"--no-panel", {"ViewerOptions.panel"}, "No statistics panel"},
   };
 }
 
 // Evaluation (eval, run).
 std::vector<OptionSpec> EvaluateFlags() {
   return {
-    {"--grey",
-     {"ImageMetricsOptions.background_grey"},
-     "Grey (0..255) that truth and render are composited over for the RGB metrics"},
-    {"--eval-levels",
-     {"EvaluateOptions.each_level"},
-     "Which renders eval measures: all (the renderer's LOD and each octree level forced) or auto (only the LOD, "
-     "faster on large photos)"},
-    {"--no-input", {"EvaluateOptions.input_views"}, "Do not evaluate at the input views (default: compare them too)"},
-    {"--no-images", {"EvaluateOptions.images"}, "No side-by-side PNGs of the held-out views (default: written)"},
-    {"--no-plots", {"EvaluateOptions.plots"}, "Do not run gnuplot (default: plots when gnuplot is installed)"},
-    {"--budget",
-     {"EvaluateOptions.budget"},
-     "Also measure what each step costs (the volume, uncompressed billboards, VQ, DXT5, the LOD) at the input "
-     "and held-out views; needs DIR/volume; adds a table to the report and metrics.json"},
-    {"--asset", {"EvaluateOptions.asset"}, "The asset to evaluate (default: DIR/tree.vtree)"},
-    {"--report",
-     {"EvaluateOptions.report"},
-     "Report folder (default: DIR/report); its other files (contact sheet, orbit/) are kept"},
-    {"--codebook-sweep",
-     {"EvaluateOptions.codebook_sweep"},
-     "JSON of PSNR per codebook size to plot (default: REPORT/codebook_sweep.json when it exists)"},
-    {"--scene-bench",
-     {"EvaluateOptions.scene_bench"},
-     "JSON of ms per frame per number of trees to plot (default: REPORT/scene_bench.json when it exists)"},
+      {"--grey",
+       {"ImageMetricsOptions.background_grey"},
+       "Grey (0..255) that truth and render are composited over for the RGB metrics"},
+      {"--eval-levels",
+       {"EvaluateOptions.each_level"},
+       "Which renders eval measures: all (the renderer's LOD and each octree level forced) or auto (only the LOD, "
+       "faster on large photos)"},
+      {"--no-input", {"EvaluateOptions.input_views"}, "Do not evaluate at the input views (default: compare them too)"},
+      {"--no-images", {"EvaluateOptions.images"}, "No side-by-side PNGs of the held-out views (default: written)"},
+      {"--no-plots", {"EvaluateOptions.plots"}, "Do not run gnuplot (default: plots when gnuplot is installed)"},
+      {"--budget",
+       {"EvaluateOptions.budget"},
+       "Also measure what each step costs (the volume, uncompressed billboards, VQ, DXT5, the LOD) at the input "
+       "and held-out views; needs DIR/volume; adds a table to the report and metrics.json"},
+      {"--asset", {"EvaluateOptions.asset"}, "The asset to evaluate (default: DIR/tree.vtree)"},
+      {"--report",
+       {"EvaluateOptions.report"},
+       "Report folder (default: DIR/report); its other files (contact sheet, orbit/) are kept"},
+      {"--codebook-sweep",
+       {"EvaluateOptions.codebook_sweep"},
+       "JSON of PSNR per codebook size to plot (default: REPORT/codebook_sweep.json when it exists)"},
+      {"--scene-bench",
+       {"EvaluateOptions.scene_bench"},
+       "JSON of ms per frame per number of trees to plot (default: REPORT/scene_bench.json when it exists)"},
   };
 }
 
@@ -319,7 +349,8 @@ std::string DescribeOptionError(const OptionError& error) {
 CLI::Option* AddFlag(CLI::App& command, std::string_view flag, bool& value) {
   const OptionSpec& spec = RegisteredOption(flag);
   if (LongName(spec.flag).starts_with("--no-"))  // "--no-fit" turns fit.enabled off
-    return command.add_flag_callback(spec.flag, [&value] { value = false; }, spec.help);
+    return command.add_flag_callback(
+        spec.flag, [&value] { value = false; }, spec.help);
   return command.add_flag(spec.flag, value, spec.help);
 }
 

@@ -9,12 +9,11 @@
 namespace voltree::app {
 namespace {
 
-const std::vector<std::pair<std::string, CameraModel>> kCameraModels = {
-    {"SIMPLE_PINHOLE", CameraModel::kSimplePinhole},
-    {"PINHOLE", CameraModel::kPinhole},
-    {"SIMPLE_RADIAL", CameraModel::kSimpleRadial},
-    {"RADIAL", CameraModel::kRadial},
-    {"OPENCV", CameraModel::kOpenCV}};
+const std::vector<std::pair<std::string, CameraModel>> kCameraModels = {{"SIMPLE_PINHOLE", CameraModel::kSimplePinhole},
+                                                                        {"PINHOLE", CameraModel::kPinhole},
+                                                                        {"SIMPLE_RADIAL", CameraModel::kSimpleRadial},
+                                                                        {"RADIAL", CameraModel::kRadial},
+                                                                        {"OPENCV", CameraModel::kOpenCV}};
 
 }  // namespace
 
@@ -153,8 +152,7 @@ void AddRenderOptions(CLI::App& command, TreeRenderOptions& render) {
 
 CLI::Option* AddBackgroundOption(CLI::App& command, std::array<float, 4>& background) {
   const auto component = [&](int c) { return std::to_string(int(std::lround(background[c] * 255))); };
-  const std::string shown =
-      background[3] == 0 ? "transparent" : component(0) + "," + component(1) + "," + component(2);
+  const std::string shown = background[3] == 0 ? "transparent" : component(0) + "," + component(1) + "," + component(2);
   return AddParsedOption<std::array<float, 4>>(
       command, "--background", background,
       [](const std::string& text, std::array<float, 4>& out) { out = ParseBackground("--background", text); }, shown);

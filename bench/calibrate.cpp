@@ -75,8 +75,8 @@ void RunTree(const std::string& tree, const BenchOptions& bench) {
   options.max_image_size = bench.size;
   options.max_features = bench.max_features;
   options.mask = FeatureMaskFromName(bench.mask);
-  options.min_registered = 0;         // report partial registrations instead of failing
-  options.height_metres = height;     // metres, so that the frame compares with the studio's
+  options.min_registered = 0;      // report partial registrations instead of failing
+  options.height_metres = height;  // metres, so that the frame compares with the studio's
   std::printf("| %-9s | %4d | %2d |", tree.c_str(), bench.size, bench.views);
   std::fflush(stdout);
   try {
@@ -88,9 +88,9 @@ void RunTree(const std::string& tree, const BenchOptions& bench) {
         std::acos(std::clamp((align.rotation * Eigen::Vector3d::UnitZ()).z(), -1.0, 1.0)) * 180 / M_PI;
     const double origin_percent = 100 * align.translation.norm() / height;
     std::printf(" %6.1f | %6.1f | %5.1f | %2d/%-2d | %5.3f | %5.2f / %5.2f | %5.2f / %5.2f | %5.2f | %5.1f | %5.1f |\n",
-                StageSeconds(report, "feature"), StageSeconds(report, "exhaustive") +
-                StageSeconds(report, "sequential"), StageSeconds(report, "mapper"), report.registered,
-                report.images, report.mean_reprojection_error, accuracy.mean_rotation_degrees,
+                StageSeconds(report, "feature"),
+                StageSeconds(report, "exhaustive") + StageSeconds(report, "sequential"), StageSeconds(report, "mapper"),
+                report.registered, report.images, report.mean_reprojection_error, accuracy.mean_rotation_degrees,
                 accuracy.max_rotation_degrees, 100 * accuracy.mean_center_error, 100 * accuracy.max_center_error,
                 up_degrees, origin_percent, 100 * (align.scale - 1));
   } catch (const Error& error) {
@@ -118,10 +118,12 @@ int main(int argc, char** argv) {
   try {
     std::printf("rings %d, lowest at %.0f deg, max features %d, mask %s; errors after similarity alignment\n",
                 bench.rings, bench.min_elevation, bench.max_features, bench.mask.c_str());
-    std::printf("| tree      | size | n  | ext s  | match s| map s | reg   | reproj| rot deg mean/max | centre %% mean/max "
-                "| up deg| orig %%| scale %%|\n");
-    std::printf("|-----------|------|----|--------|--------|-------|-------|-------|------------------|"
-                "-------------------|-------|-------|--------|\n");
+    std::printf(
+        "| tree      | size | n  | ext s  | match s| map s | reg   | reproj| rot deg mean/max | centre %% mean/max "
+        "| up deg| orig %%| scale %%|\n");
+    std::printf(
+        "|-----------|------|----|--------|--------|-------|-------|-------|------------------|"
+        "-------------------|-------|-------|--------|\n");
     for (const std::string& tree : bench.trees) RunTree(tree, bench);
   } catch (const Error& error) {
     std::fprintf(stderr, "voltree-bench-calibrate: %s\n", error.what());

@@ -53,8 +53,7 @@ MatteSummary CompareWithTruth(const fs::path& dir, const fs::path& truth_mattes)
   for (const fs::path& photo : ListPhotos(dir / "images")) {
     const fs::path estimate = dir / "mattes" / (photo.stem().string() + ".png");
     if (!fs::exists(estimate)) continue;
-    const MatteError error =
-        CompareMattes(ReadImage8(estimate, 1), ReadImage8(FindUserMatte(truth_mattes, photo), 1));
+    const MatteError error = CompareMattes(ReadImage8(estimate, 1), ReadImage8(FindUserMatte(truth_mattes, photo), 1));
     summary.mse_mean += error.mse / 1000;  // as a fraction, like the targets
     summary.sad_mean += error.sad;
     summary.mse_worst = std::max(summary.mse_worst, error.mse / 1000);
@@ -206,11 +205,14 @@ int main(int argc, char** argv) {
   app.add_option("--work", bench.work, "Folder for the sets (replaced)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
-    std::printf("%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error per ring: "
-                "worst rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
-                bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels);
-    std::printf("| tree | backdrop | input | registered (low + high ring) | camera error | matte MSE mean / worst | SAD mean / worst | "
-                "RGB PSNR | alpha PSNR | precision | recall | s: matte / calibrate / reconstruct / rest |\n");
+    std::printf(
+        "%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error per ring: "
+        "worst rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
+        bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels);
+    std::printf(
+        "| tree | backdrop | input | registered (low + high ring) | camera error | matte MSE mean / worst | SAD mean / "
+        "worst | "
+        "RGB PSNR | alpha PSNR | precision | recall | s: matte / calibrate / reconstruct / rest |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& tree : bench.trees)
       for (const std::string& backdrop : bench.backdrops) RunCase(tree, backdrop, bench);

@@ -182,14 +182,17 @@ int main(int argc, char** argv) {
       cv::Mat labels, centres;
       t0 = std::chrono::steady_clock::now();
       c0 = std::clock();
-      const double compactness = cv::kmeans(data, k, labels, cv::TermCriteria(cv::TermCriteria::MAX_ITER, kmeans_iterations, 0),
-                                            1, cv::KMEANS_PP_CENTERS, centres);
+      const double compactness =
+          cv::kmeans(data, k, labels, cv::TermCriteria(cv::TermCriteria::MAX_ITER, kmeans_iterations, 0), 1,
+                     cv::KMEANS_PP_CENTERS, centres);
       cv_time.Add(t0, c0);
       cv_lowest = std::min(cv_lowest, compactness / double(set.size()));
       cv_highest = std::max(cv_highest, compactness / double(set.size()));
     }
-    std::printf("\nGLA vs cv::kmeans (k = %d, %zu vectors of %d dims, %d iterations, %d threads available,"
-                " best of %d runs)\n", k, set.size(), set.dimension, kmeans_iterations, cv::getNumThreads(), repeats);
+    std::printf(
+        "\nGLA vs cv::kmeans (k = %d, %zu vectors of %d dims, %d iterations, %d threads available,"
+        " best of %d runs)\n",
+        k, set.size(), set.dimension, kmeans_iterations, cv::getNumThreads(), repeats);
     std::printf("%12s  %10s  %10s  %18s\n", "", "wall s", "CPU s", "mean distortion");
     std::printf("%12s  %10.2f  %10.2f  %18.3f\n", "voltree GLA", ours_time.wall, ours_time.cpu, ours.distortion);
     std::printf("%12s  %10.2f  %10.2f  %8.3f..%.3f\n", "cv::kmeans", cv_time.wall, cv_time.cpu, cv_lowest, cv_highest);

@@ -49,9 +49,10 @@ ReconstructInput PhantomInput(int size) {
     View view;
     view.name = "view_" + std::to_string(i) + ".png";
     view.camera = Camera::Pinhole(size, size, 1.45 * size, 1.45 * size, 0.5 * size, 0.5 * size);
-    view.pose = Pose::LookAt(centre + 3.0 * Eigen::Vector3d(std::cos(azimuth) * std::cos(elevation),
-                                                            std::sin(azimuth) * std::cos(elevation), std::sin(elevation)),
-                             centre, Eigen::Vector3d::UnitZ());
+    view.pose =
+        Pose::LookAt(centre + 3.0 * Eigen::Vector3d(std::cos(azimuth) * std::cos(elevation),
+                                                    std::sin(azimuth) * std::cos(elevation), std::sin(elevation)),
+                     centre, Eigen::Vector3d::UnitZ());
     Image8 matte(size, size, 1), fg(size, size, 4);
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
@@ -84,7 +85,8 @@ Row RunOne(const std::string& workspace, ReconstructOptions options, int size) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     Progress quiet(true);
-    const ReconstructInput input = workspace.empty() ? PhantomInput(size) : LoadReconstructInput(workspace, options, &quiet);
+    const ReconstructInput input =
+        workspace.empty() ? PhantomInput(size) : LoadReconstructInput(workspace, options, &quiet);
     const auto loaded = Clock::now();
     ReconstructStats stats;
     const Volume volume = Reconstruct(input, options, &quiet, &stats);
@@ -120,7 +122,8 @@ Row RunForked(const std::string& workspace, const ReconstructOptions& options, i
   }
   close(fds[1]);
   Row row;
-  if (read(fds[0], &row, sizeof(row)) != ssize_t(sizeof(row))) std::snprintf(row.error, sizeof(row.error), "child died");
+  if (read(fds[0], &row, sizeof(row)) != ssize_t(sizeof(row)))
+    std::snprintf(row.error, sizeof(row.error), "child died");
   close(fds[0]);
   int status = 0;
   rusage usage{};
@@ -151,9 +154,9 @@ int main(int argc, char** argv) {
     std::printf("input: synthetic phantom, 24 views x %d^2\n", size);
   else
     std::printf("input: %s\n", workspace.c_str());
-  std::printf("%-9s %6s %7s %7s %8s %8s %7s %8s %9s %12s %12s %9s %11s %11s %7s\n", "grid", "levels", "threads", "load_s",
-              "solve_s", "bboard_s", "fit_s", "total_s", "peak_MB", "ray_passes/s", "texel_rays/s", "cells", "bb_before",
-              "bb_after", "pruned");
+  std::printf("%-9s %6s %7s %7s %8s %8s %7s %8s %9s %12s %12s %9s %11s %11s %7s\n", "grid", "levels", "threads",
+              "load_s", "solve_s", "bboard_s", "fit_s", "total_s", "peak_MB", "ray_passes/s", "texel_rays/s", "cells",
+              "bb_before", "bb_after", "pruned");
   struct Config {
     int branching, levels;
   };

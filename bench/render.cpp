@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
                   r.billboards, r.median_ms, r.traversal_ms);
     std::printf("\nbillboards before pruning per level:");
     for (const VtreeLevel& level : asset.levels)
-      std::printf(" %llu/%zu", static_cast<unsigned long long>(level.billboards_before_pruning), level.billboards.size());
+      std::printf(" %llu/%zu", static_cast<unsigned long long>(level.billboards_before_pruning),
+                  level.billboards.size());
     std::printf(" (before/kept)\n");
   } catch (const Error& error) {
     std::fprintf(stderr, "voltree-bench-render: error: %s\n", error.what());

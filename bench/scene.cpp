@@ -199,8 +199,8 @@ int main(int argc, char** argv) {
     std::printf("%-30s %6s %7s %7s %9s %11s %10s %13s %9s\n", "frames", "trees", "drawn", "culled", "cells",
                 "billboards", "median ms", "traversal ms", "GPU KiB");
     for (const Row& r : rows)
-      std::printf("%-30s %6zu %7.1f %7.1f %9.0f %11.0f %10.1f %13.1f %9.1f\n", r.name.c_str(), r.trees, r.drawn, r.culled,
-                  r.cells, r.billboards, r.median_ms, r.traversal_ms, r.gpu_bytes / 1024.0);
+      std::printf("%-30s %6zu %7.1f %7.1f %9.0f %11.0f %10.1f %13.1f %9.1f\n", r.name.c_str(), r.trees, r.drawn,
+                  r.culled, r.cells, r.billboards, r.median_ms, r.traversal_ms, r.gpu_bytes / 1024.0);
 
     // Frame time against the number of trees: the first N of the forest, from the full forest's orbit.
     const Scene forest = LoadScene(fs::path(scenes_dir) / "forest_290.json", {assets});
@@ -219,15 +219,25 @@ int main(int argc, char** argv) {
       SceneRenderer renderer(subset, forest_assets);
       const Row r = Measure(renderer, forest_cameras, {}, Str(n, " trees"));
       std::printf("%6zu %10.1f %11.0f\n", n, r.median_ms, r.billboards);
-      sweep.push_back({{"trees", n}, {"median_ms", r.median_ms}, {"billboards", r.billboards}, {"drawn", r.drawn},
+      sweep.push_back({{"trees", n},
+                       {"median_ms", r.median_ms},
+                       {"billboards", r.billboards},
+                       {"drawn", r.drawn},
                        {"gpu_bytes", r.gpu_bytes}});
     }
     if (!json_path.empty()) {
-      nlohmann::json out = {{"renderer", context.renderer()}, {"size", size}, {"frames", frames}, {"forest_subsets", sweep}};
+      nlohmann::json out = {
+          {"renderer", context.renderer()}, {"size", size}, {"frames", frames}, {"forest_subsets", sweep}};
       nlohmann::json table = nlohmann::json::array();
       for (const Row& r : rows)
-        table.push_back({{"name", r.name}, {"trees", r.trees}, {"median_ms", r.median_ms}, {"billboards", r.billboards},
-                         {"cells", r.cells}, {"drawn", r.drawn}, {"culled", r.culled}, {"gpu_bytes", r.gpu_bytes}});
+        table.push_back({{"name", r.name},
+                         {"trees", r.trees},
+                         {"median_ms", r.median_ms},
+                         {"billboards", r.billboards},
+                         {"cells", r.cells},
+                         {"drawn", r.drawn},
+                         {"culled", r.culled},
+                         {"gpu_bytes", r.gpu_bytes}});
       out["rows"] = table;
       WriteFileAtomic(json_path, out.dump(2) + "\n");
       std::printf("wrote %s\n", json_path.c_str());

@@ -56,8 +56,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   std::printf("photo studio, %u hardware threads, supersampling %dx%d (backdrop %dx%d)\n",
-              std::thread::hardware_concurrency(), studio.supersample, studio.supersample,
-              studio.backdrop_supersample, studio.backdrop_supersample);
+              std::thread::hardware_concurrency(), studio.supersample, studio.supersample, studio.backdrop_supersample,
+              studio.backdrop_supersample);
   std::printf("| tree | size | views | grow s | s per view | total s | MB written |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   Progress quiet(true);

@@ -41,10 +41,10 @@ std::string Capture(const std::string& command) {
 nlohmann::json PageBench(const fs::path& page, int frames, int width, int height, bool s3tc) {
   const std::string url = "file://" + (page / "index.html").string() + "?ui=0&bench=" + std::to_string(frames) +
                           "&size=" + std::to_string(width) + "x" + std::to_string(height) + (s3tc ? "" : "&s3tc=0");
-  const std::string dom = Capture("timeout 600 chromium --headless=new --no-sandbox --disable-gpu --use-angle=swiftshader "
-                                  "--enable-unsafe-swiftshader --force-device-scale-factor=1 --window-size=" +
-                                  std::to_string(width + 100) + "," + std::to_string(height + 100) + " --dump-dom '" +
-                                  url + "' 2>/dev/null");
+  const std::string dom = Capture(
+      "timeout 600 chromium --headless=new --no-sandbox --disable-gpu --use-angle=swiftshader "
+      "--enable-unsafe-swiftshader --force-device-scale-factor=1 --window-size=" +
+      std::to_string(width + 100) + "," + std::to_string(height + 100) + " --dump-dom '" + url + "' 2>/dev/null");
   const size_t start = dom.find("<pre id=\"bench\" hidden=\"\">");
   const size_t end = dom.find("</pre>", start);
   if (start == std::string::npos || end == std::string::npos || end == start + 26) {
@@ -99,9 +99,14 @@ int main(int argc, char** argv) {
                   width, height, page.bytes / 1024.0, s3tc.at("first_frame_ms").get<double>(),
                   s3tc.at("median_ms").get<double>(), decoded.at("median_ms").get<double>(), native.median_ms,
                   native.mean_billboards);
-      rows.push_back({{"input", fs::path(input).filename().string()}, {"width", width}, {"height", height},
-                      {"page_bytes", page.bytes}, {"page", s3tc}, {"page_rgba8", decoded},
-                      {"render_median_ms", native.median_ms}, {"render_billboards", native.mean_billboards},
+      rows.push_back({{"input", fs::path(input).filename().string()},
+                      {"width", width},
+                      {"height", height},
+                      {"page_bytes", page.bytes},
+                      {"page", s3tc},
+                      {"page_rgba8", decoded},
+                      {"render_median_ms", native.median_ms},
+                      {"render_billboards", native.mean_billboards},
                       {"renderer", native.renderer}});
     }
     fs::remove_all(scratch);

@@ -26,18 +26,22 @@ FeatureMask FeatureMaskFromName(const std::string& name) {
 void CalibrateOptions::Check() const {
   const CameraModel model = CameraModelFromName(camera_model);
   if (!camera_params.empty() && int(camera_params.size()) != CameraModelParamCount(model))
-    FailOption("CalibrateOptions.camera_params", "for ", camera_model, " needs ", CameraModelParamCount(model), " values, got ",
-         camera_params.size());
+    FailOption("CalibrateOptions.camera_params", "for ", camera_model, " needs ", CameraModelParamCount(model),
+               " values, got ", camera_params.size());
   if (max_image_size < 64) FailOption("CalibrateOptions.max_image_size", "must be at least 64, got ", max_image_size);
   if (max_features < 64) FailOption("CalibrateOptions.max_features", "must be at least 64, got ", max_features);
-  if (min_pose_inliers < 6) FailOption("CalibrateOptions.min_pose_inliers", "must be at least 6, got ", min_pose_inliers);
+  if (min_pose_inliers < 6)
+    FailOption("CalibrateOptions.min_pose_inliers", "must be at least 6, got ", min_pose_inliers);
   if (matcher != "exhaustive" && matcher != "sequential")
     FailOption("CalibrateOptions.matcher", "must be exhaustive or sequential, got '", matcher, "'");
-  if (!(min_registered >= 0 && min_registered <= 1)) FailOption("CalibrateOptions.min_registered", "must be in [0, 1], got ", min_registered);
+  if (!(min_registered >= 0 && min_registered <= 1))
+    FailOption("CalibrateOptions.min_registered", "must be in [0, 1], got ", min_registered);
   if (!(near_band > 0 && near_band < 1)) FailOption("CalibrateOptions.near_band", "must be in (0, 1), got ", near_band);
   if (up && !(up->norm() > 0 && up->allFinite())) FailOption("CalibrateOptions.up", "must be a non-zero direction");
-  if (height_metres && !(*height_metres > 0)) FailOption("CalibrateOptions.height_metres", "must be positive, got ", *height_metres);
-  if (!import_model.empty() && !known_cameras.empty()) FailOption("CalibrateOptions.import_model", "and --known-cameras exclude each other");
+  if (height_metres && !(*height_metres > 0))
+    FailOption("CalibrateOptions.height_metres", "must be positive, got ", *height_metres);
+  if (!import_model.empty() && !known_cameras.empty())
+    FailOption("CalibrateOptions.import_model", "and --known-cameras exclude each other");
   hull.Check();
 }
 
@@ -47,7 +51,8 @@ std::vector<std::string> ListImages(const fs::path& folder) {
   for (const auto& entry : fs::directory_iterator(folder)) {
     if (!entry.is_regular_file()) continue;
     std::string extension = entry.path().extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     for (const char* known : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp"})
       if (extension == known) names.push_back(entry.path().filename().string());
   }
@@ -137,7 +142,8 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
     if ((point.position - target).norm() < 0.5 * distance)
       for (int k = 0; k < 3; ++k) axes[k].push_back(point.position[k]);
   if (axes[0].size() < 10)
-    Fail("cannot bound the tree: ", lacking, ", and too few sparse points are near it; expected a matte for every "
+    Fail("cannot bound the tree: ", lacking,
+         ", and too few sparse points are near it; expected a matte for every "
          "camera of the model (run 'voltree matte', or remove the cameras of photos you left out)");
   Bounds bounds;
   for (int k = 0; k < 3; ++k) {
@@ -179,8 +185,8 @@ void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, 
     source = scene.value("source", source);
   }
   WriteSceneJson(workspace / "scene.json", report, source);
-  progress.Say("calibrate", Str("bounds from the mattes' ", bounds.source, " written to ",
-                                (workspace / "scene.json").string()));
+  progress.Say("calibrate",
+               Str("bounds from the mattes' ", bounds.source, " written to ", (workspace / "scene.json").string()));
 }
 
 CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
@@ -214,8 +220,9 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
     report.stage_seconds = sfm.stage_seconds;
   }
   model.Check();
-  CheckCamerasAreApart(model, run_colmap ? colmap_folder : options.known_cameras.empty() ? options.import_model
-                                                                                         : options.known_cameras);
+  CheckCamerasAreApart(model, run_colmap                      ? colmap_folder
+                              : options.known_cameras.empty() ? options.import_model
+                                                              : options.known_cameras);
 
   // Registration: every photo should have a camera.
   std::vector<std::string> registered;
@@ -235,8 +242,8 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
   if (report.registered < 3 && !run_colmap) {  // COLMAP never ran: the names are what is wrong
     const fs::path& given = options.known_cameras.empty() ? options.import_model : options.known_cameras;
     Fail("only ", report.registered, " of ", images.size(), " photos have a camera in ", given.string(),
-         " (at least 3 needed): its images are ", list(registered), " but ", (workspace / "images").string(),
-         " holds ", list(images), "; expected the model's image names to be the photos' file names");
+         " (at least 3 needed): its images are ", list(registered), " but ", (workspace / "images").string(), " holds ",
+         list(images), "; expected the model's image names to be the photos' file names");
   }
   if (report.registered < 3)
     Fail("only ", report.registered, " of ", images.size(), " photos registered (at least 3 needed); ",
@@ -273,9 +280,9 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
   WriteColmapText(sparse.path(), model);
   sparse.Commit();
   WriteSceneJson(workspace / "scene.json", report, source);
-  progress.Say("calibrate", Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
-                                report.mean_reprojection_error, " px; wrote ", (workspace / "sparse").string(),
-                                " and scene.json"));
+  progress.Say("calibrate",
+               Str(report.registered, "/", report.images, " photos registered, mean reprojection error ",
+                   report.mean_reprojection_error, " px; wrote ", (workspace / "sparse").string(), " and scene.json"));
   return report;
 }
 

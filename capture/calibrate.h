@@ -44,32 +44,32 @@ struct CalibrateOptions {
   // inliers. At 256² a 5-degree photo sometimes had fewer than 30 and stayed out (23 of 24, one
   // run in three of the photos-alone test; COLMAP's threads make runs differ).
   int min_pose_inliers = 15;
-  double min_registered = 0.8;                 // fraction of the photos that must register
+  double min_registered = 0.8;  // fraction of the photos that must register
   FeatureMask mask = FeatureMask::kAll;
-  double near_band = 0.15;                     // kNear: band width as a fraction of the image diagonal
-  std::optional<Eigen::Vector3d> up;           // world up in COLMAP's frame; default from the cameras
-  std::optional<double> height_metres;         // tree height: scale to metres
-  std::filesystem::path import_model;          // an existing COLMAP model (text or binary), normalized
-  std::filesystem::path known_cameras;         // a model already in the tree frame, taken as is
+  double near_band = 0.15;              // kNear: band width as a fraction of the image diagonal
+  std::optional<Eigen::Vector3d> up;    // world up in COLMAP's frame; default from the cameras
+  std::optional<double> height_metres;  // tree height: scale to metres
+  std::filesystem::path import_model;   // an existing COLMAP model (text or binary), normalized
+  std::filesystem::path known_cameras;  // a model already in the tree frame, taken as is
   HullOptions hull;
   bool force = false;
   void Check() const;  // throws Error
 };
 
 struct CalibrateReport {
-  int images = 0;                  // photos in DIR/images
+  int images = 0;  // photos in DIR/images
   int registered = 0;
   std::vector<std::string> unregistered;
-  int models_found = 1;            // COLMAP models; the largest is kept
-  double mean_reprojection_error = 0;  // pixels, over all observations
+  int models_found = 1;                                       // COLMAP models; the largest is kept
+  double mean_reprojection_error = 0;                         // pixels, over all observations
   std::vector<std::pair<std::string, double>> stage_seconds;  // COLMAP stages
-  std::string bounds_source;       // "visual hull", "sparse points"
+  std::string bounds_source;                                  // "visual hull", "sparse points"
   Eigen::Vector3d bounds_min = Eigen::Vector3d::Zero(), bounds_max = Eigen::Vector3d::Zero();
-  std::string units;               // "metres" or "reconstruction"
+  std::string units;  // "metres" or "reconstruction"
 };
 
 CalibrateReport CalibrateWorkspace(const std::filesystem::path& workspace, const CalibrateOptions& options,
-                          Progress& progress);
+                                   Progress& progress);
 
 // Recomputes the tree's bounds in DIR/scene.json from DIR/mattes/ and the cameras in DIR/sparse/
 // (already in the tree frame, kept as they are): for mattes made after calibration. Throws Error

@@ -52,8 +52,8 @@ bool WriteFeatureMasks(const fs::path& workspace, const fs::path& mask_folder, c
   return true;
 }
 
-ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_folder,
-                             const CalibrateOptions& options, Progress& progress) {
+ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_folder, const CalibrateOptions& options,
+                             Progress& progress) {
   const fs::path colmap = FindColmap();
   const fs::path database = colmap_folder / "database.db";
   const fs::path sparse = colmap_folder / "sparse";
@@ -66,12 +66,20 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
     progress.Say("calibrate", Str("colmap ", name, " done in ", Str(std::round(run.seconds * 10) / 10), " s"));
   };
 
-  std::vector<std::string> extract = {"--database_path", database.string(), "--image_path", images.string(),
-                                      "--ImageReader.single_camera", "1",
-                                      "--ImageReader.camera_model", options.camera_model,
-                                      "--SiftExtraction.use_gpu", "0",
-                                      "--SiftExtraction.max_image_size", Str(options.max_image_size),
-                                      "--SiftExtraction.max_num_features", Str(options.max_features)};
+  std::vector<std::string> extract = {"--database_path",
+                                      database.string(),
+                                      "--image_path",
+                                      images.string(),
+                                      "--ImageReader.single_camera",
+                                      "1",
+                                      "--ImageReader.camera_model",
+                                      options.camera_model,
+                                      "--SiftExtraction.use_gpu",
+                                      "0",
+                                      "--SiftExtraction.max_image_size",
+                                      Str(options.max_image_size),
+                                      "--SiftExtraction.max_num_features",
+                                      Str(options.max_features)};
   if (!options.camera_params.empty())
     extract.insert(extract.end(), {"--ImageReader.camera_params", JoinNumbers(options.camera_params)});
   if (options.affine_features) extract.insert(extract.end(), {"--SiftExtraction.estimate_affine_shape", "1"});
@@ -85,8 +93,13 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   stage("feature_extractor", extract);
   stage(options.matcher + "_matcher", {"--database_path", database.string(), "--SiftMatching.use_gpu", "0",
                                        "--SiftMatching.guided_matching", options.guided_matching ? "1" : "0"});
-  std::vector<std::string> map = {"--database_path", database.string(), "--image_path", images.string(),
-                                  "--output_path", sparse.string(), "--Mapper.abs_pose_min_num_inliers",
+  std::vector<std::string> map = {"--database_path",
+                                  database.string(),
+                                  "--image_path",
+                                  images.string(),
+                                  "--output_path",
+                                  sparse.string(),
+                                  "--Mapper.abs_pose_min_num_inliers",
                                   Str(options.min_pose_inliers)};
   if (!options.camera_params.empty())  // known intrinsics stay as given
     map.insert(map.end(), {"--Mapper.ba_refine_focal_length", "0", "--Mapper.ba_refine_principal_point", "0",
@@ -94,20 +107,24 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   // The mapper exits with an error when it could not start any model ("No good initial image
   // pair found"): say what that means for the photos instead of showing the log's tail.
   const fs::path mapper_log = colmap_folder / "mapper.log";
-  const ChildResult mapper = RunChild(colmap, [&] {
-    std::vector<std::string> full = {"mapper"};
-    full.insert(full.end(), map.begin(), map.end());
-    return full;
-  }(), mapper_log);
+  const ChildResult mapper = RunChild(
+      colmap,
+      [&] {
+        std::vector<std::string> full = {"mapper"};
+        full.insert(full.end(), map.begin(), map.end());
+        return full;
+      }(),
+      mapper_log);
   result.stage_seconds.emplace_back("mapper", mapper.seconds);
   if (!mapper.ok() && mapper.signal == 0 &&
       LogTail(mapper_log, 3).find("failed to create sparse model") != std::string::npos)
-    Fail("COLMAP could not start a model: no pair of photos shares enough matched features (see ",
-         mapper_log.string(), "). Neighbouring photos should overlap more (more photos, at most ~30 degrees "
+    Fail("COLMAP could not start a model: no pair of photos shares enough matched features (see ", mapper_log.string(),
+         "). Neighbouring photos should overlap more (more photos, at most ~30 degrees "
          "apart around the tree, not grazing the ground), or --max-image-size/--max-features higher");
   if (!mapper.ok())
-    Fail("colmap mapper ", mapper.signal != 0 ? Str("crashed (signal ", mapper.signal, ")")
-                                              : Str("failed (exit code ", mapper.exit_code, ")"),
+    Fail("colmap mapper ",
+         mapper.signal != 0 ? Str("crashed (signal ", mapper.signal, ")")
+                            : Str("failed (exit code ", mapper.exit_code, ")"),
          "; the end of its log ", mapper_log.string(), ":\n", LogTail(mapper_log, 15));
   progress.Say("calibrate", Str("colmap mapper done in ", Str(std::round(mapper.seconds * 10) / 10), " s"));
 
@@ -119,7 +136,8 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   result.models_found = int(models.size());
   if (models.empty())
     Fail("COLMAP reconstructed nothing: too few matches between the photos (see ",
-         (colmap_folder / "mapper.log").string(), "). More overlap between photos, or --max-image-size/--max-features "
+         (colmap_folder / "mapper.log").string(),
+         "). More overlap between photos, or --max-image-size/--max-features "
          "higher, may help");
   size_t best_size = 0;
   for (const fs::path& folder : models) {
@@ -133,8 +151,8 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   if (result.models_found > 1)
     progress.Say("calibrate", Str("COLMAP made ", result.models_found, " separate models; keeping the largest, ",
                                   result.model_folder.string(), " (", best_size, " photos)"));
-  stage("model_converter", {"--input_path", result.model_folder.string(), "--output_path",
-                            result.model_folder.string(), "--output_type", "TXT"});
+  stage("model_converter", {"--input_path", result.model_folder.string(), "--output_path", result.model_folder.string(),
+                            "--output_type", "TXT"});
   return result;
 }
 

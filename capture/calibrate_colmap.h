@@ -11,7 +11,7 @@
 namespace voltree {
 
 struct ColmapSfmResult {
-  ColmapModel model;           // the largest model COLMAP produced
+  ColmapModel model;  // the largest model COLMAP produced
   std::filesystem::path model_folder;
   int models_found = 0;
   std::vector<std::pair<std::string, double>> stage_seconds;

@@ -19,20 +19,34 @@ namespace {
 // COLMAP's numeric model ids (colmap/sensor/models.h); only the ones voltree supports map to a model.
 std::optional<CameraModel> ModelFromColmapId(int32_t id) {
   switch (id) {
-    case 0: return CameraModel::kSimplePinhole;
-    case 1: return CameraModel::kPinhole;
-    case 2: return CameraModel::kSimpleRadial;
-    case 3: return CameraModel::kRadial;
-    case 4: return CameraModel::kOpenCV;
-    default: return std::nullopt;
+    case 0:
+      return CameraModel::kSimplePinhole;
+    case 1:
+      return CameraModel::kPinhole;
+    case 2:
+      return CameraModel::kSimpleRadial;
+    case 3:
+      return CameraModel::kRadial;
+    case 4:
+      return CameraModel::kOpenCV;
+    default:
+      return std::nullopt;
   }
 }
 
 // Names of all COLMAP models, to name unsupported ones helpfully.
 const char* ColmapModelName(int32_t id) {
-  static const char* const kNames[] = {"SIMPLE_PINHOLE", "PINHOLE", "SIMPLE_RADIAL", "RADIAL", "OPENCV",
-                                       "OPENCV_FISHEYE", "FULL_OPENCV", "FOV", "SIMPLE_RADIAL_FISHEYE",
-                                       "RADIAL_FISHEYE", "THIN_PRISM_FISHEYE"};
+  static const char* const kNames[] = {"SIMPLE_PINHOLE",
+                                       "PINHOLE",
+                                       "SIMPLE_RADIAL",
+                                       "RADIAL",
+                                       "OPENCV",
+                                       "OPENCV_FISHEYE",
+                                       "FULL_OPENCV",
+                                       "FOV",
+                                       "SIMPLE_RADIAL_FISHEYE",
+                                       "RADIAL_FISHEYE",
+                                       "THIN_PRISM_FISHEYE"};
   return id >= 0 && id < 11 ? kNames[id] : "unknown";
 }
 
@@ -127,8 +141,7 @@ void ReadImages(const fs::path& path, ColmapModel* model) {
         in.FailAt(at, "POINT3D_ID ", point_id, " is too large");
       image.point3d_ids.push_back(point_id == kInvalidPoint ? -1 : int64_t(point_id));
     }
-    if (!model->images.emplace(image.image_id, std::move(image)).second)
-      in.FailAt(record, "duplicate IMAGE_ID ", id);
+    if (!model->images.emplace(image.image_id, std::move(image)).second) in.FailAt(record, "duplicate IMAGE_ID ", id);
   }
   ExpectEnd(in);
 }
@@ -161,8 +174,7 @@ void ReadPoints(const fs::path& path, ColmapModel* model) {
         in.FailAt(record, "point ", id, ": POINT2D_IDX ", index, " out of range for image ", image_id);
       point.track.emplace_back(int(image_id), int(index));
     }
-    if (!model->points.emplace(point.point_id, std::move(point)).second)
-      in.FailAt(record, "duplicate POINT3D_ID ", id);
+    if (!model->points.emplace(point.point_id, std::move(point)).second) in.FailAt(record, "duplicate POINT3D_ID ", id);
   }
   ExpectEnd(in);
 }

@@ -61,8 +61,10 @@ ChildResult RunChild(const fs::path& program, const std::vector<std::string>& ar
   }
   ChildResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-  else if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status))
+    result.signal = WTERMSIG(status);
+  else if (WIFEXITED(status))
+    result.exit_code = WEXITSTATUS(status);
   return result;
 }
 

@@ -15,8 +15,8 @@ std::filesystem::path FindExecutable(const std::string& name, const std::string&
 std::filesystem::path FindColmap();
 
 struct ChildResult {
-  int exit_code = 0;     // meaningful when signal == 0
-  int signal = 0;        // non-zero when the child was killed (a crash)
+  int exit_code = 0;  // meaningful when signal == 0
+  int signal = 0;     // non-zero when the child was killed (a crash)
   double seconds = 0;
   bool ok() const { return signal == 0 && exit_code == 0; }
 };

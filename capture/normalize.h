@@ -30,8 +30,9 @@ ColmapModel TransformModel(const ColmapModel& model, const Similarity& similarit
 
 // World up from cameras that circle the tree. The normal of the least-squares plane through the
 // camera centres, when they are flat (an orbit) and the normal is within 30 degrees of the photos'
-// up; otherwise (a line of cameras, fewer than 3) the mean of the cameras' image-up axes. The sign always follows the image-up axes: photos are
-// taken upright, so the cameras' -Y axes, averaged, point up. Throws Error when there are no views.
+// up; otherwise (a line of cameras, fewer than 3) the mean of the cameras' image-up axes. The sign always follows the
+// image-up axes: photos are taken upright, so the cameras' -Y axes, averaged, point up. Throws Error when there are no
+// views.
 Eigen::Vector3d EstimateUp(const std::vector<View>& views);
 
 // The rotation taking `up` to +Z (the shortest arc; heading is left as it is).

@@ -14,7 +14,8 @@ namespace voltree {
 
 void HullOptions::Check() const {
   if (resolution < 4 || resolution > 1024) FailOption("HullOptions.resolution", "must be in 4..1024, got ", resolution);
-  if (!(matte_threshold > 0 && matte_threshold < 1)) FailOption("HullOptions.matte_threshold", "must be in (0, 1), got ", matte_threshold);
+  if (!(matte_threshold > 0 && matte_threshold < 1))
+    FailOption("HullOptions.matte_threshold", "must be in (0, 1), got ", matte_threshold);
   if (!(min_seen_fraction > 0 && min_seen_fraction <= 1))
     FailOption("HullOptions.min_seen_fraction", "must be in (0, 1], got ", min_seen_fraction);
 }
@@ -93,8 +94,9 @@ VisualHull CarveVisualHull(const std::vector<View>& views, const std::vector<Ima
           high = high.cwiseMax(Eigen::Vector3i(x, y, z));
         }
   if (hull.voxels == 0)
-    Fail("the visual hull is empty: no point is on the tree in every photo (do the mattes match the images "
-         "and the cameras?)");
+    Fail(
+        "the visual hull is empty: no point is on the tree in every photo (do the mattes match the images "
+        "and the cameras?)");
   hull.bounds_min = region_min + voxel * low.cast<double>();
   hull.bounds_max = region_min + voxel * (high + Eigen::Vector3i::Ones()).cast<double>();
   Eigen::Vector2d base_sum = Eigen::Vector2d::Zero();

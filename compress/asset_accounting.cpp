@@ -9,9 +9,12 @@ namespace {
 
 std::string Size(uint64_t bytes) {
   char text[64];
-  if (bytes >= (uint64_t(1) << 20)) std::snprintf(text, sizeof text, "%.2f MiB", bytes / 1048576.0);
-  else if (bytes >= 1024) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
-  else std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
+  if (bytes >= (uint64_t(1) << 20))
+    std::snprintf(text, sizeof text, "%.2f MiB", bytes / 1048576.0);
+  else if (bytes >= 1024)
+    std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
+  else
+    std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
   return text;
 }
 
@@ -45,11 +48,13 @@ std::string DescribeAsset(const VtreeAsset& asset, const AssetBytes& bytes) {
   for (size_t l = 0; l < asset.levels.size(); ++l) {
     const auto& level = asset.levels[l];
     char line[160];
-    const double pruned = level.billboards_before_pruning
-                              ? 100.0 * (1.0 - double(level.billboards.size()) / double(level.billboards_before_pruning))
-                              : 0.0;
-    std::snprintf(line, sizeof line, "%5zu  %10u  %9zu  %10zu  %14llu  %5.1f%%\n", l, level.resolution, level.cells.size(),
-                  level.billboards.size(), static_cast<unsigned long long>(level.billboards_before_pruning), pruned);
+    const double pruned =
+        level.billboards_before_pruning
+            ? 100.0 * (1.0 - double(level.billboards.size()) / double(level.billboards_before_pruning))
+            : 0.0;
+    std::snprintf(line, sizeof line, "%5zu  %10u  %9zu  %10zu  %14llu  %5.1f%%\n", l, level.resolution,
+                  level.cells.size(), level.billboards.size(),
+                  static_cast<unsigned long long>(level.billboards_before_pruning), pruned);
     out += line;
   }
   out += Str("total cells ", asset.CellCount(), ", billboards ", asset.BillboardCount(), "\n");
@@ -62,8 +67,8 @@ std::string DescribeAsset(const VtreeAsset& asset, const AssetBytes& bytes) {
              Size(bytes.vq_indices), ")  ", Ratio(bytes.uncompressed_textures, bytes.Vq()), "\n");
   out += Str("  GPU textures (DXT5 atlas)    ", Size(bytes.GpuTextures()), "  ",
              Ratio(bytes.uncompressed_textures, bytes.GpuTextures()), "\n");
-  out += Str("  GPU resident total           ", Size(bytes.Gpu()), "  (atlas ", Size(bytes.gpu_atlas), ", billboard records ",
-             Size(bytes.gpu_billboards), ", cells ", Size(bytes.gpu_cells), ")\n");
+  out += Str("  GPU resident total           ", Size(bytes.Gpu()), "  (atlas ", Size(bytes.gpu_atlas),
+             ", billboard records ", Size(bytes.gpu_billboards), ", cells ", Size(bytes.gpu_cells), ")\n");
   if (bytes.on_disk) out += Str("  on disk                      ", Size(bytes.on_disk), "\n");
   return out;
 }

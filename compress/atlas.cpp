@@ -44,8 +44,8 @@ VtreeAtlas BuildAtlas(const std::vector<uint8_t>& rgb, const std::vector<uint8_t
   return atlas;
 }
 
-void FetchBillboard(const std::vector<uint8_t>& decoded_atlas, const VtreeAtlas& atlas, int texels,
-                    uint32_t colour, uint32_t alpha, std::vector<uint8_t>& out) {
+void FetchBillboard(const std::vector<uint8_t>& decoded_atlas, const VtreeAtlas& atlas, int texels, uint32_t colour,
+                    uint32_t alpha, std::vector<uint8_t>& out) {
   const auto [cx, cy] = atlas.TileOrigin(colour);
   const auto [ax, ay] = atlas.TileOrigin(alpha);
   for (int y = 0; y < texels; ++y) {

@@ -22,8 +22,8 @@ VtreeAtlas BuildAtlas(const std::vector<uint8_t>& rgb, const std::vector<uint8_t
 
 // What the renderer sees for one billboard: straight RGB of tile `colour`, A of tile `alpha`,
 // fetched from a decoded (RGBA8) atlas, then premultiplied. Appends n*n RGBA8 texels to `out`.
-void FetchBillboard(const std::vector<uint8_t>& decoded_atlas, const VtreeAtlas& atlas, int texels,
-                    uint32_t colour, uint32_t alpha, std::vector<uint8_t>& out);
+void FetchBillboard(const std::vector<uint8_t>& decoded_atlas, const VtreeAtlas& atlas, int texels, uint32_t colour,
+                    uint32_t alpha, std::vector<uint8_t>& out);
 
 // Premultiplies straight colour by alpha, rounding: what the shader's rgb * a yields in 8 bits.
 inline uint8_t Premultiply(uint8_t straight, uint8_t alpha) {

@@ -40,8 +40,7 @@ std::vector<uint8_t> GatherTexels(const Volume& volume) {
   return texels;
 }
 
-TrainingSet ColourVectors(const std::vector<uint8_t>& texels, int texel_count, ColourSpace space,
-                          bool alpha_weighted) {
+TrainingSet ColourVectors(const std::vector<uint8_t>& texels, int texel_count, ColourSpace space, bool alpha_weighted) {
   const size_t count = texels.size() / (4 * size_t(texel_count));
   TrainingSet set;
   set.dimension = 3 * texel_count;

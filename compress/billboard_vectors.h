@@ -24,8 +24,7 @@ size_t CountBillboards(const Volume& volume);
 // no colour; it takes the alpha-weighted mean colour of its billboard so it adds no spurious
 // variance. With `alpha_weighted`, each component is weighted by its texel's alpha in [0, 1]:
 // the colour of a texel nobody sees then does not matter to the codebook.
-TrainingSet ColourVectors(const std::vector<uint8_t>& texels, int texel_count, ColourSpace space,
-                          bool alpha_weighted);
+TrainingSet ColourVectors(const std::vector<uint8_t>& texels, int texel_count, ColourSpace space, bool alpha_weighted);
 // Alpha vectors in [0, 255].
 TrainingSet AlphaVectors(const std::vector<uint8_t>& texels, int texel_count);
 

@@ -76,7 +76,8 @@ __attribute__((target("avx2,fma"))) inline unsigned MayMove4Avx2(const Sketch& x
   __m256 products[4];
   for (int t = 0; t < 4; ++t)
     products[t] = _mm256_fmadd_ps(high, _mm256_load_ps(c[t].terms + 8), _mm256_mul_ps(low, _mm256_load_ps(c[t].terms)));
-  const __m256 sums = _mm256_hadd_ps(_mm256_hadd_ps(products[0], products[1]), _mm256_hadd_ps(products[2], products[3]));
+  const __m256 sums =
+      _mm256_hadd_ps(_mm256_hadd_ps(products[0], products[1]), _mm256_hadd_ps(products[2], products[3]));
   const __m128 dots = _mm_add_ps(_mm256_castps256_ps128(sums), _mm256_extractf128_ps(sums, 1));
   return unsigned(_mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(dots, dots), _mm_loadu_ps(gap2))));
 }

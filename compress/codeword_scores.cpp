@@ -55,7 +55,7 @@ void ScoreGeneric(const ScoreJob& job) {
 #if defined(__x86_64__)
 // One row of a tile: score = |c|^2 - 2 x.c for 16 codewords, stored, and folded into the row minimum.
 __attribute__((target("avx2,fma"))) inline void StoreScores(float* row, __m256 dot_low, __m256 dot_high,
-                                                           __m256 norm2_low, __m256 norm2_high, __m256& lowest) {
+                                                            __m256 norm2_low, __m256 norm2_high, __m256& lowest) {
   const __m256 minus_two = _mm256_set1_ps(-2.f);
   const __m256 low = _mm256_fmadd_ps(minus_two, dot_low, norm2_low);
   const __m256 high = _mm256_fmadd_ps(minus_two, dot_high, norm2_high);
@@ -140,8 +140,7 @@ CodewordScorer::CodewordScorer(const Codebook& codebook, bool use_simd)
   }
 }
 
-void CodewordScorer::Score(const float* vectors, int count, float* scores, float* centred_norm2,
-                           float* lowest) const {
+void CodewordScorer::Score(const float* vectors, int count, float* scores, float* centred_norm2, float* lowest) const {
   const int d = dimension_;
   float rows[kBlock * 64];
   std::vector<float> large_rows;  // dimensions above 64 (not used by voltree's 16 and 48)

@@ -36,15 +36,11 @@ Lab LinearToLab(float r, float g, float b) {
   return {lightness, 500.f * (fx - fy), 200.f * (fy - fz)};
 }
 
-uint8_t SaturateRound(float value) {
-  return static_cast<uint8_t>(std::clamp(std::lround(value), 0L, 255L));
-}
+uint8_t SaturateRound(float value) { return static_cast<uint8_t>(std::clamp(std::lround(value), 0L, 255L)); }
 
 }  // namespace
 
-Lab SrgbToLab(float r, float g, float b) {
-  return LinearToLab(SrgbToLinear(r), SrgbToLinear(g), SrgbToLinear(b));
-}
+Lab SrgbToLab(float r, float g, float b) { return LinearToLab(SrgbToLinear(r), SrgbToLinear(g), SrgbToLinear(b)); }
 
 Lab Srgb8ToLab(uint8_t r, uint8_t g, uint8_t b) {
   static const LinearTable table;  // immutable after construction, thread-safe init
@@ -52,8 +48,7 @@ Lab Srgb8ToLab(uint8_t r, uint8_t g, uint8_t b) {
 }
 
 std::array<uint8_t, 3> EncodeLab8(const Lab& lab) {
-  return {SaturateRound(lab[0] * 255.f / 100.f), SaturateRound(lab[1] + 128.f),
-          SaturateRound(lab[2] + 128.f)};
+  return {SaturateRound(lab[0] * 255.f / 100.f), SaturateRound(lab[1] + 128.f), SaturateRound(lab[2] + 128.f)};
 }
 
 std::array<float, 3> LabToSrgb(const Lab& lab) {

@@ -66,16 +66,19 @@ void CompressOptions::Check() const {
     FailOption("CompressOptions.colour_codebook", "must be in 1..65536, got ", colour_codebook);
   if (alpha_codebook < 1 || alpha_codebook > 65536)
     FailOption("CompressOptions.alpha_codebook", "must be in 1..65536, got ", alpha_codebook);
-  if (black_threshold < 0 || black_threshold > 255) FailOption("CompressOptions.black_threshold", "must be in 0..255, got ", black_threshold);
+  if (black_threshold < 0 || black_threshold > 255)
+    FailOption("CompressOptions.black_threshold", "must be in 0..255, got ", black_threshold);
   if (!(tolerance >= 0 && tolerance < 1)) FailOption("CompressOptions.tolerance", "must be in [0, 1), got ", tolerance);
   if (max_iterations < 1) FailOption("CompressOptions.max_iterations", "must be at least 1, got ", max_iterations);
   MakeGlaOptions(*this, colour_codebook, seed).Check();
 }
 
 nlohmann::json CompressOptions::ToJson() const {
-  return {{"codebook", colour_codebook}, {"alpha_codebook", alpha_codebook}, {"space", ColourSpaceName(space)},
-          {"gla", CodewordRuleName(rule)}, {"alpha_weighted", alpha_weighted}, {"tolerance", tolerance},
-          {"max_iterations", max_iterations}, {"seed", seed}, {"black_threshold", black_threshold}};
+  return {{"codebook", colour_codebook},       {"alpha_codebook", alpha_codebook},
+          {"space", ColourSpaceName(space)},   {"gla", CodewordRuleName(rule)},
+          {"alpha_weighted", alpha_weighted},  {"tolerance", tolerance},
+          {"max_iterations", max_iterations},  {"seed", seed},
+          {"black_threshold", black_threshold}};
 }
 
 std::vector<uint8_t> DecodeBillboardsFromCodewords(const std::vector<uint8_t>& colour_rgb,
@@ -95,7 +98,8 @@ std::vector<uint8_t> DecodeBillboardsFromCodewords(const std::vector<uint8_t>& c
 }
 
 std::vector<uint8_t> DecodeBillboardsFromAtlas(const VtreeAsset& asset) {
-  const std::vector<uint8_t> decoded = DecodeDxt5(asset.atlas.dxt5.data(), int(asset.atlas.width), int(asset.atlas.height));
+  const std::vector<uint8_t> decoded =
+      DecodeDxt5(asset.atlas.dxt5.data(), int(asset.atlas.width), int(asset.atlas.height));
   std::vector<uint8_t> out;
   out.reserve(asset.BillboardCount() * asset.texels * asset.texels * 4);
   for (const auto& level : asset.levels)
@@ -116,8 +120,8 @@ CompressResult CompressVolume(const Volume& volume, const CompressOptions& optio
 
   // Distinct seeds per codebook so that colour and alpha do not share a random stream.
   const TrainingSet colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
-  stats.colour = RunGla(colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed),
-                        Reporter(progress, "colour"));
+  stats.colour =
+      RunGla(colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed), Reporter(progress, "colour"));
   const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
   stats.alpha = RunGla(alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
                        Reporter(progress, "alpha"));
@@ -127,7 +131,8 @@ CompressResult CompressVolume(const Volume& volume, const CompressOptions& optio
     uses[i] = {uint16_t(stats.colour.assignment[i]), uint16_t(stats.alpha.assignment[i])};
   stats.colour_rgb = DecodeColourCodebook(stats.colour.codebook, options.space);
   stats.alpha_bytes = DecodeAlphaCodebook(stats.alpha.codebook);
-  stats.black_texels_fixed = FixBlackTexels(stats.colour_rgb, stats.alpha_bytes, texel_count, uses, options.black_threshold);
+  stats.black_texels_fixed =
+      FixBlackTexels(stats.colour_rgb, stats.alpha_bytes, texel_count, uses, options.black_threshold);
   stats.psnr_vq = Psnr(texels, DecodeBillboardsFromCodewords(stats.colour_rgb, stats.alpha_bytes, volume.texels, uses));
 
   VtreeAsset& asset = result.asset;

@@ -36,10 +36,10 @@ struct CompressStats {
   GlaResult colour;  // codebook, assignment, distortion history
   GlaResult alpha;
   size_t black_texels_fixed = 0;
-  double psnr_vq = 0;    // billboards rebuilt from the 8-bit codewords
-  double psnr_dxt5 = 0;  // billboards as the renderer fetches them from the DXT5 atlas
-  std::vector<uint8_t> colour_rgb;  // decoded codewords after the black fix, K x n*n x 3
-  std::vector<uint8_t> alpha_bytes; // decoded alpha codewords, K x n*n
+  double psnr_vq = 0;                // billboards rebuilt from the 8-bit codewords
+  double psnr_dxt5 = 0;              // billboards as the renderer fetches them from the DXT5 atlas
+  std::vector<uint8_t> colour_rgb;   // decoded codewords after the black fix, K x n*n x 3
+  std::vector<uint8_t> alpha_bytes;  // decoded alpha codewords, K x n*n
 };
 
 struct CompressResult {

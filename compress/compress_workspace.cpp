@@ -18,8 +18,7 @@ CompressWorkspaceResult CompressWorkspace(const fs::path& workspace, const Compr
   CompressResult result = CompressVolume(volume, options.compress, &progress);
   // The workspace's folder name only: an absolute path would make the bytes depend on where it lives.
   const fs::path name = dir.filename().empty() ? dir.parent_path().filename() : dir.filename();
-  result.asset.provenance["source"] =
-      options.source_name.empty() ? name.string() : options.source_name;
+  result.asset.provenance["source"] = options.source_name.empty() ? name.string() : options.source_name;
   VtreeWriteOptions write;
   write.zstd = options.zstd;
   write.force = options.force;

@@ -51,7 +51,7 @@ void DecodeColour(const uint8_t* block, uint8_t* rgba, Dxt5Rounding rounding) {
   int c[4][3];
   ExpandRgb565(uint16_t(block[0] | block[1] << 8), c[0]);
   ExpandRgb565(uint16_t(block[2] | block[3] << 8), c[1]);
-  for (int ch = 0; ch < 3; ++ch) {  // DXT3/5 colour blocks are always in 4-colour mode
+  for (int ch = 0; ch < 3; ++ch) {              // DXT3/5 colour blocks are always in 4-colour mode
     if (rounding == Dxt5Rounding::kLlvmpipe) {  // 8-bit fixed-point weights 85/256 and 170/256
       c[2][ch] = c[0][ch] + FloorDiv256((c[1][ch] - c[0][ch]) * 85);
       c[3][ch] = c[0][ch] + FloorDiv256((c[1][ch] - c[0][ch]) * 170);

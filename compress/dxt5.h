@@ -17,10 +17,10 @@ std::vector<uint8_t> EncodeDxt5(const uint8_t* rgba, int width, int height);
 // Decoders differ in how they round the interpolants, which the S3TC specification defines as
 // real numbers (differences of at most 1).
 enum class Dxt5Rounding {
-  kNearest,    // alpha rounded to nearest, colour truncated (2c0 + c1) / 3: used for measurements
-  kTruncate,   // libsquish's squish::Decompress: both truncated
-  kLlvmpipe,   // Mesa llvmpipe (gallivm), measured bit-exact: v0 + floor((v1 - v0) * w / 256) with
-               // colour w = 85, 170 and alpha w = floor(i * floor(255 * 64 / 7) / 64) (or / 5)
+  kNearest,   // alpha rounded to nearest, colour truncated (2c0 + c1) / 3: used for measurements
+  kTruncate,  // libsquish's squish::Decompress: both truncated
+  kLlvmpipe,  // Mesa llvmpipe (gallivm), measured bit-exact: v0 + floor((v1 - v0) * w / 256) with
+              // colour w = 85, 170 and alpha w = floor(i * floor(255 * 64 / 7) / 64) (or / 5)
 };
 
 // Decodes one block into 16 RGBA8 texels, row-major.

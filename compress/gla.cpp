@@ -71,8 +71,8 @@ uint32_t ClosestMember(const TrainingSet& set, const uint32_t* members, size_t c
   uint32_t best = members[0];
   float best_distance = std::numeric_limits<float>::infinity();
   for (size_t m = 0; m < count; ++m) {
-    const float d = SquaredDistance(set.Vector(members[m]), centre, set.Weights(members[m]), set.dimension,
-                                    best_distance);
+    const float d =
+        SquaredDistance(set.Vector(members[m]), centre, set.Weights(members[m]), set.dimension, best_distance);
     if (d < best_distance) best_distance = d, best = members[m];
   }
   return best;
@@ -129,16 +129,15 @@ CodewordRule ParseCodewordRule(const std::string& name) {
   Fail("unknown codeword rule '", name, "'; expected classic or modified");
 }
 
-std::string CodewordRuleName(CodewordRule rule) {
-  return rule == CodewordRule::kCentroid ? "classic" : "modified";
-}
+std::string CodewordRuleName(CodewordRule rule) { return rule == CodewordRule::kCentroid ? "classic" : "modified"; }
 
 void GlaOptions::Check() const {
   if (codebook_size < 1 || codebook_size > 65536)
     FailOption("GlaOptions.codebook_size", "must be in 1..65536, got ", codebook_size);
   if (!(tolerance >= 0 && tolerance < 1)) FailOption("GlaOptions.tolerance", "must be in [0, 1), got ", tolerance);
   if (max_iterations < 1) FailOption("GlaOptions.max_iterations", "must be at least 1, got ", max_iterations);
-  if (seeding_trials < 1 || seeding_trials > 64) FailOption("GlaOptions.seeding_trials", "must be in 1..64, got ", seeding_trials);
+  if (seeding_trials < 1 || seeding_trials > 64)
+    FailOption("GlaOptions.seeding_trials", "must be in 1..64, got ", seeding_trials);
 }
 
 void ClusterMean(const TrainingSet& set, const uint32_t* members, size_t count, float* mean) {
@@ -171,8 +170,8 @@ GlaResult RunGla(const TrainingSet& set, const GlaOptions& options, const GlaObs
   options.Check();
   set.Check();
   if (set.size() == 0) Fail("GLA: no training vectors");
-  Seeds seeds = SeedKMeansPlusPlus(set, static_cast<size_t>(options.codebook_size), options.seed,
-                                   options.seeding_trials);
+  Seeds seeds =
+      SeedKMeansPlusPlus(set, static_cast<size_t>(options.codebook_size), options.seed, options.seeding_trials);
   // The seeding leaves every vector with its nearest centre: the first assignment, already made.
   return RunLloyd(set, options, std::move(seeds.centres), std::move(seeds.nearest), std::move(seeds.distances),
                   observer);

@@ -36,11 +36,11 @@ struct GlaOptions {
 
 struct GlaResult {
   Codebook codebook;
-  std::vector<uint32_t> assignment;         // nearest final codeword of every training vector
-  std::vector<double> distortion_history;   // mean distortion after each Lloyd assignment
-  double distortion = 0;                    // mean distortion with the final codebook
+  std::vector<uint32_t> assignment;        // nearest final codeword of every training vector
+  std::vector<double> distortion_history;  // mean distortion after each Lloyd assignment
+  double distortion = 0;                   // mean distortion with the final codebook
   int iterations = 0;
-  int reseeded = 0;                         // empty cells re-seeded, over all iterations
+  int reseeded = 0;  // empty cells re-seeded, over all iterations
 };
 
 // Called after every Lloyd iteration with (iteration, mean distortion).

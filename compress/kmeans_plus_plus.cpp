@@ -158,8 +158,15 @@ class BoundedSeeding {
       std::vector<Passed> passed;
       for (size_t k = range.begin(); k != range.end(); ++k) {
         const Chunk& chunk = chunks_[k];
-        const Run run{uint32_t(k), chunk.begin, chunk.end, arena_.nearest.data(), arena_.sketch.data(),
-                      &from[chunk.cell * trials], trials, &probes[chunk.cell * slots], &gaps2[chunk.cell * slots]};
+        const Run run{uint32_t(k),
+                      chunk.begin,
+                      chunk.end,
+                      arena_.nearest.data(),
+                      arena_.sketch.data(),
+                      &from[chunk.cell * trials],
+                      trials,
+                      &probes[chunk.cell * slots],
+                      &gaps2[chunk.cell * slots]};
         CollectPassed(run, avx2_, passed);
       }
       MeasurePassed(passed, candidates, gains);
@@ -183,9 +190,8 @@ class BoundedSeeding {
         if (changed.empty() || changed.back() != chunk.cell) changed.push_back(chunk.cell);
       }
     }
-    tbb::parallel_for(size_t(0), changed.size(), [&](size_t j) {
-      cells_[changed[j]].potential = SumNearest(cells_[changed[j]]);
-    });
+    tbb::parallel_for(size_t(0), changed.size(),
+                      [&](size_t j) { cells_[changed[j]].potential = SumNearest(cells_[changed[j]]); });
     AddCell(std::move(joiners), centre);
   }
 
@@ -280,9 +286,9 @@ class BoundedSeeding {
   }
 
   const TrainingSet& set_;
-  const bool avx2_;    // the sketch test may use AVX2
+  const bool avx2_;  // the sketch test may use AVX2
   PrincipalAxes axes_;
-  HugePageVector<float> projected_;      // every training vector on the axes
+  HugePageVector<float> projected_;  // every training vector on the axes
   Arena arena_;
   std::vector<Cell> cells_;
   std::vector<Chunk> chunks_;  // the last measurement
@@ -322,9 +328,10 @@ class DenseSeeding {
       for (size_t i = c * kChunk; i < End(c); ++i) {
         const float nearest = nearest_[i];
         for (size_t t = 0; t < trials; ++t) {
-          const float d = SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), set_.Weights(i), set_.dimension,
-                                          nearest);
-          if (d < nearest) gains[c * trials + t] += nearest - d, chunks_[c].moves.push_back({uint32_t(i), uint32_t(t), d});
+          const float d =
+              SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), set_.Weights(i), set_.dimension, nearest);
+          if (d < nearest)
+            gains[c * trials + t] += nearest - d, chunks_[c].moves.push_back({uint32_t(i), uint32_t(t), d});
         }
       }
     });
@@ -370,7 +377,7 @@ class DenseSeeding {
   }
 
   const TrainingSet& set_;
-  std::vector<float> nearest_;      // squared distance of every vector to its nearest centre
+  std::vector<float> nearest_;       // squared distance of every vector to its nearest centre
   std::vector<uint32_t> centre_of_;  // and which centre that is
   std::vector<Chunk> chunks_;
   size_t centres_ = 1;

@@ -40,7 +40,8 @@ PrincipalAxes FindPrincipalAxes(const TrainingSet& set, int count, size_t sample
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);  // eigenvalues ascending
   result.by_component.resize(size_t(result.count) * d);
   for (int a = 0; a < result.count; ++a)
-    for (int i = 0; i < d; ++i) result.by_component[size_t(i) * result.count + a] = float(solver.eigenvectors()(i, d - 1 - a));
+    for (int i = 0; i < d; ++i)
+      result.by_component[size_t(i) * result.count + a] = float(solver.eigenvectors()(i, d - 1 - a));
   return result;
 }
 

@@ -16,11 +16,12 @@ double Range(std::mt19937_64& rng, double low, double high) { return low + (high
 // A base colour in Lab drawn from a foliage palette.
 Lab FoliageColour(std::mt19937_64& rng) {
   const double pick = Uniform(rng);
-  if (pick < 0.55) return {float(Range(rng, 25, 55)), float(Range(rng, -35, -10)), float(Range(rng, 15, 45))};   // leaves
-  if (pick < 0.75) return {float(Range(rng, 45, 75)), float(Range(rng, -25, -5)), float(Range(rng, 35, 65))};    // sunlit
-  if (pick < 0.90) return {float(Range(rng, 20, 45)), float(Range(rng, 5, 20)), float(Range(rng, 10, 30))};      // bark
-  if (pick < 0.97) return {float(Range(rng, 3, 15)), float(Range(rng, -10, 0)), float(Range(rng, 0, 10))};       // shadow
-  return {float(Range(rng, 80, 95)), float(Range(rng, -5, 5)), float(Range(rng, -15, 5))};                       // sky gaps
+  if (pick < 0.55)
+    return {float(Range(rng, 25, 55)), float(Range(rng, -35, -10)), float(Range(rng, 15, 45))};                // leaves
+  if (pick < 0.75) return {float(Range(rng, 45, 75)), float(Range(rng, -25, -5)), float(Range(rng, 35, 65))};  // sunlit
+  if (pick < 0.90) return {float(Range(rng, 20, 45)), float(Range(rng, 5, 20)), float(Range(rng, 10, 30))};    // bark
+  if (pick < 0.97) return {float(Range(rng, 3, 15)), float(Range(rng, -10, 0)), float(Range(rng, 0, 10))};     // shadow
+  return {float(Range(rng, 80, 95)), float(Range(rng, -5, 5)), float(Range(rng, -15, 5))};  // sky gaps
 }
 
 void FillBillboard(std::mt19937_64& rng, int n, uint8_t* rgba) {
@@ -33,7 +34,8 @@ void FillBillboard(std::mt19937_64& rng, int n, uint8_t* rgba) {
     for (int x = 0; x < n; ++x) {
       const double u = (x + 0.5) / n - 0.5, v = (y + 0.5) / n - 0.5;
       const Lab lab = {float(std::clamp(base[0] + gx * u + gy * v + Range(rng, -2, 2), 0.0, 100.0)),
-                       float(base[1] + ga * u + Range(rng, -1.5, 1.5)), float(base[2] + gb * v + Range(rng, -1.5, 1.5))};
+                       float(base[1] + ga * u + Range(rng, -1.5, 1.5)),
+                       float(base[2] + gb * v + Range(rng, -1.5, 1.5))};
       const auto rgb = LabToSrgb8(lab);
       const double distance = std::hypot(x + 0.5 - cx, y + 0.5 - cy) / radius;
       const double a = std::clamp(peak * (1.4 - distance) / 0.6, 0.0, peak);  // soft-edged blob
@@ -95,7 +97,8 @@ Volume MakeSyntheticVolume(const SyntheticVolumeOptions& options) {
         level.billboards.push_back({c, uint16_t(v)});
     level.billboards_before_pruning = level.cells.size() * options.views;
     level.texels.resize(level.billboards.size() * texel_bytes);
-    for (size_t b = 0; b < level.billboards.size(); ++b) FillBillboard(rng, options.texels, level.texels.data() + b * texel_bytes);
+    for (size_t b = 0; b < level.billboards.size(); ++b)
+      FillBillboard(rng, options.texels, level.texels.data() + b * texel_bytes);
     volume.levels.push_back(std::move(level));
   }
   return volume;

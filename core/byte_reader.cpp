@@ -4,8 +4,7 @@ namespace voltree {
 
 std::string_view ByteReader::UntilNul(const char* what) {
   const size_t end = bytes_.find('\0', offset_);
-  if (end == std::string_view::npos)
-    Fail("truncated at byte ", offset_, ": ", what, " has no terminating NUL");
+  if (end == std::string_view::npos) Fail("truncated at byte ", offset_, ": ", what, " has no terminating NUL");
   const std::string_view text = bytes_.substr(offset_, end - offset_);
   offset_ = end + 1;
   return text;

@@ -41,7 +41,7 @@ class ByteReader {
   // Fills `values` with as many consecutive little-endian values; the bounds are checked once,
   // before anything is read.
   template <typename T>
-    requires std::integral<T> || std::floating_point<T>
+  requires std::integral<T> || std::floating_point<T>
   void Array(std::span<T> values, const char* what) {
     if (values.size() > remaining() / sizeof(T)) Truncated(what, values.size(), sizeof(T));
     const char* data = bytes_.data() + offset_;
@@ -80,9 +80,9 @@ class ByteReader {
  private:
   template <typename T>
   static T Decode(const char* data) {
-    using Bits = std::conditional_t<sizeof(T) == 8, uint64_t,
-                                    std::conditional_t<sizeof(T) == 4, uint32_t,
-                                                       std::conditional_t<sizeof(T) == 2, uint16_t, uint8_t>>>;
+    using Bits = std::conditional_t<
+        sizeof(T) == 8, uint64_t,
+        std::conditional_t<sizeof(T) == 4, uint32_t, std::conditional_t<sizeof(T) == 2, uint16_t, uint8_t>>>;
     Bits bits = 0;
     for (size_t i = 0; i < sizeof(T); ++i) bits |= Bits(Bits(uint8_t(data[i])) << (8 * i));
     return std::bit_cast<T>(bits);

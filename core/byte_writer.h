@@ -28,15 +28,18 @@ class ByteWriter {
   void F64(double value) { Le(std::bit_cast<uint64_t>(value)); }
 
   template <typename T>
-    requires std::integral<T> || std::floating_point<T>
+  requires std::integral<T> || std::floating_point<T>
   void Array(std::span<const T> values) {
     if constexpr (std::endian::native == std::endian::little) {
       Bytes(values.data(), values.size_bytes());
     } else {
       for (const T& value : values) {
-        if constexpr (std::integral<T>) Le(value);
-        else if constexpr (sizeof(T) == 4) F32(value);
-        else F64(value);
+        if constexpr (std::integral<T>)
+          Le(value);
+        else if constexpr (sizeof(T) == 4)
+          F32(value);
+        else
+          F64(value);
       }
     }
   }

@@ -29,8 +29,7 @@ const ModelInfo& Info(CameraModel model) {
 }
 
 bool SingleFocal(CameraModel model) {
-  return model == CameraModel::kSimplePinhole || model == CameraModel::kSimpleRadial ||
-         model == CameraModel::kRadial;
+  return model == CameraModel::kSimplePinhole || model == CameraModel::kSimpleRadial || model == CameraModel::kRadial;
 }
 
 }  // namespace
@@ -41,15 +40,14 @@ int CameraModelParamCount(CameraModel model) { return Info(model).param_count; }
 CameraModel CameraModelFromName(std::string_view name) {
   for (const ModelInfo& info : kModels)
     if (info.name == name) return info.model;
-  Fail("unknown camera model '", name,
-       "' (expected SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV)");
+  Fail("unknown camera model '", name, "' (expected SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL or OPENCV)");
 }
 
 void Camera::Check() const {
   if (width <= 0 || height <= 0) Fail("camera size ", width, "x", height, " is not positive");
   if (static_cast<int>(params.size()) != CameraModelParamCount(model))
-    Fail("camera model ", CameraModelName(model), " needs ", CameraModelParamCount(model),
-         " parameters, got ", params.size());
+    Fail("camera model ", CameraModelName(model), " needs ", CameraModelParamCount(model), " parameters, got ",
+         params.size());
   for (size_t i = 0; i < params.size(); ++i)
     if (!std::isfinite(params[i]))
       Fail("camera ", CameraModelName(model), " parameter ", i + 1, " of ", params.size(), " is ", params[i],
@@ -62,8 +60,7 @@ double Camera::FocalX() const { return params.at(0); }
 double Camera::FocalY() const { return SingleFocal(model) ? params.at(0) : params.at(1); }
 
 Eigen::Vector2d Camera::PrincipalPoint() const {
-  return SingleFocal(model) ? Eigen::Vector2d(params.at(1), params.at(2))
-                            : Eigen::Vector2d(params.at(2), params.at(3));
+  return SingleFocal(model) ? Eigen::Vector2d(params.at(1), params.at(2)) : Eigen::Vector2d(params.at(2), params.at(3));
 }
 
 bool Camera::HasDistortion() const {
@@ -88,8 +85,7 @@ Eigen::Vector2d Camera::Distort(const Eigen::Vector2d& n) const {
       const double k1 = params[4], k2 = params[5], p1 = params[6], p2 = params[7];
       const double radial = 1.0 + k1 * r2 + k2 * r2 * r2;
       const double uv = u * v;
-      return {u * radial + 2 * p1 * uv + p2 * (r2 + 2 * u * u),
-              v * radial + 2 * p2 * uv + p1 * (r2 + 2 * v * v)};
+      return {u * radial + 2 * p1 * uv + p2 * (r2 + 2 * u * u), v * radial + 2 * p2 * uv + p1 * (r2 + 2 * v * v)};
     }
   }
   return n;
@@ -132,8 +128,12 @@ Camera Camera::Resized(int new_width, int new_height) const {
   auto& p = out.params;
   switch (model) {
     case CameraModel::kPinhole:
-    case CameraModel::kOpenCV: p[0] *= sx, p[1] *= sy, p[2] *= sx, p[3] *= sy; break;
-    default: p[0] *= 0.5 * (sx + sy), p[1] *= sx, p[2] *= sy; break;  // one focal length, then cx, cy
+    case CameraModel::kOpenCV:
+      p[0] *= sx, p[1] *= sy, p[2] *= sx, p[3] *= sy;
+      break;
+    default:
+      p[0] *= 0.5 * (sx + sy), p[1] *= sx, p[2] *= sy;
+      break;  // one focal length, then cx, cy
   }
   return out;
 }
@@ -143,9 +143,9 @@ Camera Camera::Pinhole(int width, int height, double focal_x, double focal_y, do
 }
 
 Pose Pose::LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
-  const Eigen::Vector3d forward = (target - eye).normalized();        // camera +Z
-  const Eigen::Vector3d right = forward.cross(up).normalized();       // camera +X
-  const Eigen::Vector3d down = forward.cross(right);                  // camera +Y
+  const Eigen::Vector3d forward = (target - eye).normalized();   // camera +Z
+  const Eigen::Vector3d right = forward.cross(up).normalized();  // camera +X
+  const Eigen::Vector3d down = forward.cross(right);             // camera +Y
   Eigen::Matrix3d world_to_camera;
   world_to_camera.row(0) = right;
   world_to_camera.row(1) = down;

@@ -55,9 +55,7 @@ struct Pose {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
 
   Eigen::Vector3d ToCamera(const Eigen::Vector3d& world) const { return rotation * world + translation; }
-  Eigen::Vector3d ToWorld(const Eigen::Vector3d& camera) const {
-    return rotation.conjugate() * (camera - translation);
-  }
+  Eigen::Vector3d ToWorld(const Eigen::Vector3d& camera) const { return rotation.conjugate() * (camera - translation); }
   // Camera center in world coordinates: -R^T t.
   Eigen::Vector3d Center() const { return -(rotation.conjugate() * translation); }
   // Unit viewing direction (camera +Z) in world coordinates.

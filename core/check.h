@@ -17,9 +17,9 @@ class InvariantError : public std::logic_error {
 }  // namespace voltree
 
 // Checked in every build type: the invariants guarded are cheap next to the work around them.
-#define VT_CHECK(condition, ...)                                                                         \
-  do {                                                                                                   \
-    if (!(condition))                                                                                    \
+#define VT_CHECK(condition, ...)                                                                           \
+  do {                                                                                                     \
+    if (!(condition))                                                                                      \
       throw ::voltree::InvariantError(::voltree::Str(__FILE__, ":", __LINE__, ": invariant '", #condition, \
                                                      "' failed" __VA_OPT__(, ": ", ) __VA_ARGS__));        \
   } while (false)

@@ -25,8 +25,8 @@ namespace {
 
 // One physical line of a text file, split on blanks.
 struct Line {
-  int number = 0;                       // 1-based, for messages
-  std::string_view text;                // without the line break
+  int number = 0;         // 1-based, for messages
+  std::string_view text;  // without the line break
   std::vector<std::string_view> tokens;
 };
 
@@ -149,8 +149,7 @@ void ReadCameras(const TextFile& file, ColmapModel* model) {
     } catch (const Error& error) {
       file.FailLine(line, error.what());
     }
-    if (!model->cameras.emplace(id, std::move(camera)).second)
-      file.FailLine(line, Str("duplicate CAMERA_ID ", id));
+    if (!model->cameras.emplace(id, std::move(camera)).second) file.FailLine(line, Str("duplicate CAMERA_ID ", id));
   }
 }
 
@@ -179,8 +178,7 @@ std::map<int, int> ReadImages(const TextFile& file, ColmapModel* model) {
     if (IsSkipped(line)) continue;
     const auto& t = line.tokens;
     if (t.size() < 10)
-      file.FailLine(line, Str("expected IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME, got ", t.size(),
-                              " fields"));
+      file.FailLine(line, Str("expected IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME, got ", t.size(), " fields"));
     ColmapImage image;
     image.image_id = file.Integer<int>(line, t[0], "IMAGE_ID");
     image.pose = file.ReadPose(line, 1);
@@ -189,14 +187,13 @@ std::map<int, int> ReadImages(const TextFile& file, ColmapModel* model) {
     const size_t name_start = static_cast<size_t>(t[9].data() - line.text.data());
     image.name = std::string(TrimBlanks(line.text.substr(name_start)));
     if (!model->cameras.count(image.camera_id))
-      file.FailLine(line, Str("image ", image.image_id, " names CAMERA_ID ", image.camera_id,
-                              " which is not in cameras.txt"));
+      file.FailLine(
+          line, Str("image ", image.image_id, " names CAMERA_ID ", image.camera_id, " which is not in cameras.txt"));
     if (!names.insert(image.name).second) file.FailLine(line, Str("duplicate image NAME ", image.name));
     // The POINTS2D line follows directly (it may be empty, or missing at the end of the file).
     if (i + 1 < lines.size()) ReadPoints2D(file, lines[++i], &image);
     const int id = image.image_id;
-    if (!model->images.emplace(id, std::move(image)).second)
-      file.FailLine(line, Str("duplicate IMAGE_ID ", id));
+    if (!model->images.emplace(id, std::move(image)).second) file.FailLine(line, Str("duplicate IMAGE_ID ", id));
     line_of_image[id] = line.number;
   }
   return line_of_image;
@@ -227,13 +224,12 @@ void ReadPoints(const TextFile& file, ColmapModel* model) {
       // Models stripped of their POINTS2D lines keep tracks; only check indices when we can.
       const int keypoint_count = static_cast<int>(image->second.keypoints.size());
       if (index < 0 || (keypoint_count > 0 && index >= keypoint_count))
-        file.FailLine(line, Str("POINT2D_IDX ", index, " is out of range for image ", image_id, " (",
-                                keypoint_count, " points)"));
+        file.FailLine(line, Str("POINT2D_IDX ", index, " is out of range for image ", image_id, " (", keypoint_count,
+                                " points)"));
       point.track.emplace_back(image_id, index);
     }
     const int64_t id = point.point_id;
-    if (!model->points.emplace(id, std::move(point)).second)
-      file.FailLine(line, Str("duplicate POINT3D_ID ", id));
+    if (!model->points.emplace(id, std::move(point)).second) file.FailLine(line, Str("duplicate POINT3D_ID ", id));
   }
 }
 
@@ -257,8 +253,7 @@ Rigs ReadRigs(const TextFile& file) {
     const int64_t rig_id = file.Integer<int64_t>(line, t[0], "RIG_ID");
     const int64_t sensor_count = file.Integer<int64_t>(line, t[1], "NUM_SENSORS");
     if (sensor_count < 0) file.FailLine(line, "NUM_SENSORS must not be negative");
-    if (!rigs.emplace(rig_id, std::map<int, RigSensor>{}).second)
-      file.FailLine(line, Str("duplicate RIG_ID ", rig_id));
+    if (!rigs.emplace(rig_id, std::map<int, RigSensor>{}).second) file.FailLine(line, Str("duplicate RIG_ID ", rig_id));
     auto& sensors = rigs[rig_id];
     size_t at = 2;
     auto need = [&](size_t count) {
@@ -285,7 +280,8 @@ Rigs ReadRigs(const TextFile& file) {
       }
       if (type == "CAMERA") sensors[sensor_id] = sensor;  // other sensors (IMU) carry no images
     }
-    if (at != t.size()) file.FailLine(line, Str("expected ", at, " fields for ", sensor_count, " sensors, got ", t.size()));
+    if (at != t.size())
+      file.FailLine(line, Str("expected ", at, " fields for ", sensor_count, " sensors, got ", t.size()));
   }
   return rigs;
 }
@@ -305,8 +301,8 @@ std::map<int, FrameImage> ReadFrames(const TextFile& file) {
     if (IsSkipped(line)) continue;
     const auto& t = line.tokens;
     if (t.size() < 10)
-      file.FailLine(line, Str("expected FRAME_ID RIG_ID QW QX QY QZ TX TY TZ NUM_DATA_IDS DATA_IDS[], got ",
-                              t.size(), " fields"));
+      file.FailLine(line, Str("expected FRAME_ID RIG_ID QW QX QY QZ TX TY TZ NUM_DATA_IDS DATA_IDS[], got ", t.size(),
+                              " fields"));
     const int64_t frame_id = file.Integer<int64_t>(line, t[0], "FRAME_ID");
     if (!frame_ids.insert(frame_id).second) file.FailLine(line, Str("duplicate FRAME_ID ", frame_id));
     FrameImage frame;
@@ -339,8 +335,7 @@ void ApplyFrames(const fs::path& folder, const std::map<int, int>& line_of_image
   for (auto& [image_id, image] : model->images) {
     const auto frame = frame_of_image.find(image_id);
     if (frame == frame_of_image.end())
-      FailAt(images_name, line_of_image.at(image_id), "image ", image_id, " is in no frame of ",
-             frames_file.name());
+      FailAt(images_name, line_of_image.at(image_id), "image ", image_id, " is in no frame of ", frames_file.name());
     if (frame->second.camera_id != image.camera_id)
       FailAt(frames_file.name(), frame->second.line, "frame gives image ", image_id, " camera ",
              frame->second.camera_id, " but images.txt says ", image.camera_id);
@@ -390,8 +385,7 @@ std::string CamerasText(const ColmapModel& model) {
 std::string ImagesText(const ColmapModel& model) {
   size_t observations = 0;
   for (const auto& [id, image] : model.images)
-    observations += std::count_if(image.point3d_ids.begin(), image.point3d_ids.end(),
-                                  [](int64_t p) { return p >= 0; });
+    observations += std::count_if(image.point3d_ids.begin(), image.point3d_ids.end(), [](int64_t p) { return p >= 0; });
   const double mean = model.images.empty() ? 0.0 : double(observations) / double(model.images.size());
   std::string out =
       "# Image list with two lines of data per image:\n"
@@ -401,9 +395,9 @@ std::string ImagesText(const ColmapModel& model) {
   for (const auto& [id, image] : model.images) {
     const Eigen::Quaterniond& q = image.pose.rotation;
     const Eigen::Vector3d& t = image.pose.translation;
-    out += Str(id, " ", Number17(q.w()), " ", Number17(q.x()), " ", Number17(q.y()), " ", Number17(q.z()), " ",
-               Number17(t.x()), " ", Number17(t.y()), " ", Number17(t.z()), " ", image.camera_id, " ", image.name,
-               "\n");
+    out +=
+        Str(id, " ", Number17(q.w()), " ", Number17(q.x()), " ", Number17(q.y()), " ", Number17(q.z()), " ",
+            Number17(t.x()), " ", Number17(t.y()), " ", Number17(t.z()), " ", image.camera_id, " ", image.name, "\n");
     for (size_t k = 0; k < image.keypoints.size(); ++k) {
       if (k > 0) out += " ";
       const int64_t point = k < image.point3d_ids.size() ? image.point3d_ids[k] : -1;
@@ -423,9 +417,9 @@ std::string PointsText(const ColmapModel& model) {
       "#   POINT3D_ID, X, Y, Z, R, G, B, ERROR, TRACK[] as (IMAGE_ID, POINT2D_IDX)\n";
   out += Str("# Number of points: ", model.points.size(), ", mean track length: ", Number17(mean), "\n");
   for (const auto& [id, point] : model.points) {
-    out += Str(id, " ", Number17(point.position.x()), " ", Number17(point.position.y()), " ",
-               Number17(point.position.z()), " ", int(point.color[0]), " ", int(point.color[1]), " ",
-               int(point.color[2]), " ", Number17(point.error));
+    out +=
+        Str(id, " ", Number17(point.position.x()), " ", Number17(point.position.y()), " ", Number17(point.position.z()),
+            " ", int(point.color[0]), " ", int(point.color[1]), " ", int(point.color[2]), " ", Number17(point.error));
     for (const auto& [image_id, index] : point.track) out += Str(" ", image_id, " ", index);
     out += "\n";
   }
@@ -463,8 +457,9 @@ void ColmapModel::Check() const {
 ColmapModel ReadColmapText(const fs::path& folder) {
   for (const char* required : {"cameras.txt", "images.txt"})
     if (!fs::is_regular_file(folder / required))
-      Fail((folder / required).string(), ": missing (expected a COLMAP text model: cameras.txt, images.txt, "
-                                         "points3D.txt)");
+      Fail((folder / required).string(),
+           ": missing (expected a COLMAP text model: cameras.txt, images.txt, "
+           "points3D.txt)");
   ColmapModel model;
   ReadCameras(TextFile(folder / "cameras.txt"), &model);
   const std::map<int, int> line_of_image = ReadImages(TextFile(folder / "images.txt"), &model);

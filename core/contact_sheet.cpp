@@ -15,8 +15,7 @@ void ContactSheetOptions::Check() const {
 namespace {
 
 // Averages the source pixels under each thumbnail pixel, compositing alpha over `background`.
-void DrawThumbnail(const Image8& source, int width, int height, uint8_t background, Image8& sheet,
-                   int left, int top) {
+void DrawThumbnail(const Image8& source, int width, int height, uint8_t background, Image8& sheet, int left, int top) {
   for (int y = 0; y < height; ++y) {
     const int y0 = y * source.height / height, y1 = std::max(y0 + 1, (y + 1) * source.height / height);
     for (int x = 0; x < width; ++x) {
@@ -49,8 +48,8 @@ Image8 MakeContactSheet(const std::vector<Image8>& images, const ContactSheetOpt
                options.background);
   for (size_t i = 0; i < images.size(); ++i) {
     const int column = static_cast<int>(i) % columns, row = static_cast<int>(i) / columns;
-    DrawThumbnail(images[i], width, height, options.background, sheet,
-                  options.gap + column * (width + options.gap), options.gap + row * (height + options.gap));
+    DrawThumbnail(images[i], width, height, options.background, sheet, options.gap + column * (width + options.gap),
+                  options.gap + row * (height + options.gap));
   }
   return sheet;
 }

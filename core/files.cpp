@@ -52,8 +52,7 @@ std::string ReadFile(const fs::path& path) {
 }
 
 void CheckCanWrite(const fs::path& path, bool force) {
-  if (fs::exists(path) && !force)
-    Fail(path.string(), " already exists; pass --force to overwrite it");
+  if (fs::exists(path) && !force) Fail(path.string(), " already exists; pass --force to overwrite it");
 }
 
 void CheckCanReplaceFolder(const fs::path& path, bool force) {
@@ -71,7 +70,8 @@ std::string HideStagingNames(const std::string& message) {
 std::string DescribeFilesystemError(const fs::filesystem_error& error) {
   std::string where = error.path1().empty() ? std::string("a file") : error.path1().string();
   if (!error.path2().empty()) where += Str(" (to ", error.path2().string(), ")");
-  return HideStagingNames(Str(where, ": ", error.code().message(), "; check that the folder exists and that you may "
+  return HideStagingNames(Str(where, ": ", error.code().message(),
+                              "; check that the folder exists and that you may "
                               "write there"));
 }
 

@@ -44,7 +44,9 @@ struct HugePageAllocator {
   }
 
   template <class U>
-  bool operator==(const HugePageAllocator<U>&) const { return true; }
+  bool operator==(const HugePageAllocator<U>&) const {
+    return true;
+  }
 
  private:
   static constexpr size_t kHugePage = size_t(2) << 20;

@@ -54,8 +54,7 @@ void WriteWithOiio(const fs::path& path, const Image<T>& image, TypeDesc type) {
   ImageSpec spec(image.width, image.height, image.channels, type);
   if (image.channels == 4) spec.alpha_channel = 3;
   spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels are straight; do not un-premultiply
-  if (!output->open(temporary.string(), spec) || !output->write_image(type, image.pixels.data()) ||
-      !output->close()) {
+  if (!output->open(temporary.string(), spec) || !output->write_image(type, image.pixels.data()) || !output->close()) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     Fail(path.string(), ": cannot write image: ", output->geterror());
@@ -75,13 +74,32 @@ Image8 Reorient(const Image8& in, int orientation) {
     for (int x = 0; x < out.width; ++x) {
       int sx = x, sy = y;
       switch (orientation) {
-        case 2: sx = w - 1 - x; break;
-        case 3: sx = w - 1 - x; sy = h - 1 - y; break;
-        case 4: sy = h - 1 - y; break;
-        case 5: sx = y; sy = x; break;
-        case 6: sx = y; sy = h - 1 - x; break;
-        case 7: sx = w - 1 - y; sy = h - 1 - x; break;
-        case 8: sx = w - 1 - y; sy = x; break;
+        case 2:
+          sx = w - 1 - x;
+          break;
+        case 3:
+          sx = w - 1 - x;
+          sy = h - 1 - y;
+          break;
+        case 4:
+          sy = h - 1 - y;
+          break;
+        case 5:
+          sx = y;
+          sy = x;
+          break;
+        case 6:
+          sx = y;
+          sy = h - 1 - x;
+          break;
+        case 7:
+          sx = w - 1 - y;
+          sy = h - 1 - x;
+          break;
+        case 8:
+          sx = w - 1 - y;
+          sy = x;
+          break;
       }
       for (int c = 0; c < in.channels; ++c) out.at(x, y, c) = in.at(sx, sy, c);
     }
@@ -139,8 +157,7 @@ Image8 ReadImage8(const fs::path& path, int channels) {
   if (!input) Fail(path.string(), ": cannot read image: ", OIIO::geterror());
   const ImageSpec& spec = input->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.nchannels > 4)
-    Fail(path.string(), ": unsupported image (", spec.width, "x", spec.height, ", ", spec.nchannels,
-         " channels)");
+    Fail(path.string(), ": unsupported image (", spec.width, "x", spec.height, ", ", spec.nchannels, " channels)");
   const bool floating = IsFloatingPoint(spec);
   CheckImageSizeBeforeDecoding(path, spec.width, spec.height, std::max(spec.nchannels, channels),
                                floating ? int(sizeof(float)) : 1);

@@ -15,8 +15,7 @@ struct Image {
   std::vector<T> pixels;  // row-major, top row first, channels interleaved
 
   Image() = default;
-  Image(int w, int h, int c, T fill = T{})
-      : width(w), height(h), channels(c), pixels(size_t(w) * h * c, fill) {}
+  Image(int w, int h, int c, T fill = T{}) : width(w), height(h), channels(c), pixels(size_t(w) * h * c, fill) {}
 
   bool empty() const { return pixels.empty(); }
   size_t Index(int x, int y, int c = 0) const { return (size_t(y) * width + x) * channels + c; }

@@ -13,8 +13,8 @@ namespace {
 
 void CheckSameShape(const ImageF& a, const ImageF& b, const char* what) {
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
-    Fail(what, ": images differ in shape (", a.width, "x", a.height, "x", a.channels, " vs ", b.width, "x",
-         b.height, "x", b.channels, ")");
+    Fail(what, ": images differ in shape (", a.width, "x", a.height, "x", a.channels, " vs ", b.width, "x", b.height,
+         "x", b.channels, ")");
 }
 
 // Sums per row in parallel, then adds the rows in order, so the total is the same bit for bit
@@ -42,8 +42,7 @@ std::vector<double> GaussianKernel(int size, double sigma) {
 }
 
 // Mean SSIM of one channel over the valid region (Wang et al. 2004, eq. 13 and 15).
-double ChannelSsim(const ImageF& a, const ImageF& b, int channel, const std::vector<double>& kernel,
-                   double peak) {
+double ChannelSsim(const ImageF& a, const ImageF& b, int channel, const std::vector<double>& kernel, double peak) {
   const int window = int(kernel.size());
   const int out_w = a.width - window + 1;
   const int out_h = a.height - window + 1;
@@ -75,8 +74,8 @@ double ChannelSsim(const ImageF& a, const ImageF& b, int channel, const std::vec
       const double var_a = m[2] - m[0] * m[0];
       const double var_b = m[3] - m[1] * m[1];
       const double cov = m[4] - m[0] * m[1];
-      row_total += ((2 * m[0] * m[1] + c1) * (2 * cov + c2)) /
-                   ((m[0] * m[0] + m[1] * m[1] + c1) * (var_a + var_b + c2));
+      row_total +=
+          ((2 * m[0] * m[1] + c1) * (2 * cov + c2)) / ((m[0] * m[0] + m[1] * m[1] + c1) * (var_a + var_b + c2));
     }
     return row_total;
   });
@@ -158,7 +157,8 @@ ImageF ExtractChannel(const Image8& image, int channel) {
   if (channel < 0 || channel >= image.channels)
     Fail("ExtractChannel: channel ", channel, " of an image with ", image.channels, " channels");
   ImageF out(image.width, image.height, 1);
-  for (size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = image.pixels[i * size_t(image.channels) + size_t(channel)];
+  for (size_t i = 0; i < out.pixels.size(); ++i)
+    out.pixels[i] = image.pixels[i * size_t(image.channels) + size_t(channel)];
   return out;
 }
 

@@ -10,7 +10,8 @@ namespace {
 // nlohmann writes non-finite doubles as null already; doing it here makes the contract explicit.
 nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
-MetricSummary Summarize(const std::vector<NamedViewMetrics>& views, const std::function<double(const ViewMetrics&)>& get) {
+MetricSummary Summarize(const std::vector<NamedViewMetrics>& views,
+                        const std::function<double(const ViewMetrics&)>& get) {
   MetricSummary summary;
   summary.min = summary.max = get(views.front().metrics);
   double total = 0;  // summed in view order, so the mean is deterministic

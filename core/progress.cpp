@@ -4,9 +4,7 @@
 
 namespace voltree {
 
-double Progress::ElapsedSeconds() const {
-  return std::chrono::duration<double>(Clock::now() - start_).count();
-}
+double Progress::ElapsedSeconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
 void Progress::Say(const std::string& stage, const std::string& message) {
   if (quiet_) return;

@@ -18,7 +18,7 @@ struct Billboard {
 };
 
 struct VolumeLevel {
-  int resolution = 1;  // cells per axis at this level: branching^level
+  int resolution = 1;                          // cells per axis at this level: branching^level
   std::vector<std::array<uint16_t, 3>> cells;  // integer cell coordinates, kept (uncarved) cells only
   std::vector<float> density;                  // sigma per cell, per unit length of the tree frame
   std::vector<Billboard> billboards;           // kept after pruning, sorted by (cell, view)
@@ -29,19 +29,19 @@ struct VolumeLevel {
 };
 
 struct VolumeView {
-  std::string name;                                         // the input image
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();       // camera center, tree frame
-  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();     // unit viewing direction (camera +Z)
-  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();            // unit camera -Y: billboard texel rows
+  std::string name;                                      // the input image
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();    // camera center, tree frame
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // unit viewing direction (camera +Z)
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();         // unit camera -Y: billboard texel rows
 };
 
 struct Volume {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // min corner of the root cube
-  double size = 1;                                    // edge length of the root cube
-  int branching = 2;                                  // 2: octree, 3: tri-grid
-  int texels = 4;                                     // n: billboards have n x n texels
+  double size = 1;                                   // edge length of the root cube
+  int branching = 2;                                 // 2: octree, 3: tri-grid
+  int texels = 4;                                    // n: billboards have n x n texels
   std::vector<VolumeView> views;
-  std::vector<VolumeLevel> levels;                    // levels[0] is the root
+  std::vector<VolumeLevel> levels;  // levels[0] is the root
 
   double CellSize(int level) const { return size / levels.at(level).resolution; }
   Eigen::Vector3d CellCenter(int level, const std::array<uint16_t, 3>& cell) const {

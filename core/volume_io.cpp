@@ -22,8 +22,10 @@ constexpr uint32_t kVersion = 2;
 // A volume of another version, seen in either of its files: the way out is to reconstruct again.
 [[noreturn]] void UnsupportedVersion(const std::string& file, int64_t version) {
   if (version >= 1 && version < int64_t(kVersion))
-    Fail(file, ": volume version ", version, " was written by an older voltree; run 'voltree reconstruct' again "
-         "(with --force to replace the volume; this build reads version ", kVersion, ")");
+    Fail(file, ": volume version ", version,
+         " was written by an older voltree; run 'voltree reconstruct' again "
+         "(with --force to replace the volume; this build reads version ",
+         kVersion, ")");
   Fail(file, ": unsupported volume version ", version, " (this build reads version ", kVersion, ")");
 }
 
@@ -54,8 +56,7 @@ double PrunedPercent(const VolumeLevel& level) {
 }
 
 void CheckVolume(const Volume& volume, const std::string& where) {
-  if (volume.branching != 2 && volume.branching != 3)
-    Fail(where, ": branching must be 2 or 3, got ", volume.branching);
+  if (volume.branching != 2 && volume.branching != 3) Fail(where, ": branching must be 2 or 3, got ", volume.branching);
   if (volume.texels < 1 || volume.texels > 64) Fail(where, ": texels must be in [1, 64], got ", volume.texels);
   if (!(volume.size > 0) || !std::isfinite(volume.size)) Fail(where, ": root cube size must be positive");
   if (volume.views.size() > 65535) Fail(where, ": at most 65535 views, got ", volume.views.size());
@@ -137,7 +138,8 @@ nlohmann::json VolumeJson(const Volume& volume, const nlohmann::json& provenance
   doc["texels"] = volume.texels;
   nlohmann::json views = nlohmann::json::array();
   for (const VolumeView& v : volume.views)
-    views.push_back({{"name", v.name}, {"position", Vec(v.position)}, {"direction", Vec(v.direction)}, {"up", Vec(v.up)}});
+    views.push_back(
+        {{"name", v.name}, {"position", Vec(v.position)}, {"direction", Vec(v.direction)}, {"up", Vec(v.up)}});
   doc["views"] = views;
   nlohmann::json levels = nlohmann::json::array();
   for (size_t l = 0; l < volume.levels.size(); ++l) {
@@ -170,7 +172,8 @@ Volume ReadVolume(const fs::path& folder) {
   const fs::path bin_path = folder / kVolumeBinName;
   const std::string json_file = json_path.string();
   const std::string bin_file = bin_path.string();
-  if (!fs::is_directory(folder)) Fail(folder.string(), ": no such folder (expected a volume written by 'voltree reconstruct')");
+  if (!fs::is_directory(folder))
+    Fail(folder.string(), ": no such folder (expected a volume written by 'voltree reconstruct')");
 
   nlohmann::json doc;
   try {
@@ -181,7 +184,8 @@ Volume ReadVolume(const fs::path& folder) {
   Volume volume;
   try {
     if (doc.value("format", "") != "voltree-volume") Fail(json_file, ": field 'format' must be \"voltree-volume\"");
-    if (const int version = doc.at("version").get<int>(); version != int(kVersion)) UnsupportedVersion(json_file, version);
+    if (const int version = doc.at("version").get<int>(); version != int(kVersion))
+      UnsupportedVersion(json_file, version);
     volume.origin = VecFrom(doc.at("origin"), json_file, "origin");
     volume.size = doc.at("size").get<double>();
     volume.branching = doc.at("branching").get<int>();
@@ -215,9 +219,8 @@ Volume ReadVolume(const fs::path& folder) {
   const uint32_t level_count = in.U32("the level count");
   const uint32_t view_count = in.U32("the view count");
   if (int(texels) != volume.texels || int(branching) != volume.branching || view_count != volume.views.size())
-    Fail(bin_file, ": header (texels ", texels, ", branching ", branching, ", views ", view_count,
-         ") disagrees with ", json_file, " (texels ", volume.texels, ", branching ", volume.branching, ", views ",
-         volume.views.size(), ")");
+    Fail(bin_file, ": header (texels ", texels, ", branching ", branching, ", views ", view_count, ") disagrees with ",
+         json_file, " (texels ", volume.texels, ", branching ", volume.branching, ", views ", volume.views.size(), ")");
   if (level_count > 32) Fail(bin_file, ": level count ", level_count, " is implausible (expected at most 32)");
   const size_t texel_bytes = volume.BytesPerBillboard();
   volume.levels.resize(level_count);

@@ -20,10 +20,10 @@ using nlohmann::json;
 constexpr char kMagic[8] = {'V', 'T', 'R', 'E', 'E', 0, 0, 0};
 constexpr size_t kChunkHeaderBytes = 4 + 4 + 8 + 8 + 4;
 constexpr uint32_t kRaw = 0, kZstd = 1;
-constexpr size_t kCellBytes = 3 * 2 + 4;       // coordinates + density
+constexpr size_t kCellBytes = 3 * 2 + 4;  // coordinates + density
 constexpr size_t kBillboardBytes = 4 + 2 + 2 + 2;
-constexpr uint32_t kMaxLevels = 17;            // 2^16 cells per axis fit u16 coordinates
-constexpr uint32_t kMaxAtlasSide = 16384;      // GL_MAX_TEXTURE_SIZE on every current driver
+constexpr uint32_t kMaxLevels = 17;        // 2^16 cells per axis fit u16 coordinates
+constexpr uint32_t kMaxAtlasSide = 16384;  // GL_MAX_TEXTURE_SIZE on every current driver
 
 // ---- writing ----
 
@@ -57,7 +57,9 @@ json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); 
 std::string HeaderJson(const VtreeAsset& asset) {
   json views = json::array();
   for (const auto& view : asset.views)
-    views.push_back({{"name", view.name}, {"position", Vec(view.position)}, {"direction", Vec(view.direction)},
+    views.push_back({{"name", view.name},
+                     {"position", Vec(view.position)},
+                     {"direction", Vec(view.direction)},
                      {"up", Vec(view.up)}});
   const json header = {
       {"format", "voltree"},
@@ -69,8 +71,10 @@ std::string HeaderJson(const VtreeAsset& asset) {
       {"bounds_min", Vec(asset.bounds_min)},
       {"bounds_max", Vec(asset.bounds_max)},
       {"views", views},
-      {"codebooks", {{"colour", asset.colour_codebook_size}, {"alpha", asset.alpha_codebook_size},
-                     {"colour_space", asset.colour_space}}},
+      {"codebooks",
+       {{"colour", asset.colour_codebook_size},
+        {"alpha", asset.alpha_codebook_size},
+        {"colour_space", asset.colour_space}}},
       {"atlas", {{"format", "DXT5"}, {"colour", "straight sRGB"}}},
       {"provenance", asset.provenance},
   };
@@ -168,8 +172,7 @@ std::string Unpack(const Chunk& chunk, const std::string& name, const VtreeReadO
   }
   if (chunk.encoding != kZstd) Fail(context, ": unknown encoding ", chunk.encoding, " (expected 0 raw or 1 zstd)");
   const unsigned long long content = ZSTD_getFrameContentSize(chunk.stored.data(), chunk.stored.size());
-  if (content != chunk.raw_size)
-    Fail(context, ": zstd frame does not declare the expected ", chunk.raw_size, " bytes");
+  if (content != chunk.raw_size) Fail(context, ": zstd frame does not declare the expected ", chunk.raw_size, " bytes");
   std::string raw(chunk.raw_size, '\0');
   const size_t size = ZSTD_decompress(raw.data(), raw.size(), chunk.stored.data(), chunk.stored.size());
   if (ZSTD_isError(size)) Fail(context, ": zstd: ", ZSTD_getErrorName(size));
@@ -200,8 +203,8 @@ int64_t IntField(const json& object, const char* key, int64_t low, int64_t high,
   const auto it = object.find(key);
   if (it == object.end()) Fail(context, ": missing field '", key, "'");
   if (!it->is_number_integer()) Fail(context, ": field '", key, "' must be an integer");
-  const int64_t value = it->is_number_unsigned() && it->get<uint64_t>() > uint64_t(INT64_MAX)
-                            ? INT64_MAX : it->get<int64_t>();
+  const int64_t value =
+      it->is_number_unsigned() && it->get<uint64_t>() > uint64_t(INT64_MAX) ? INT64_MAX : it->get<int64_t>();
   if (value < low || value > high)
     Fail(context, ": field '", key, "' = ", value, " is out of range [", low, ", ", high, "]");
   return value;
@@ -267,16 +270,14 @@ VtreeLevel ParseCells(const std::string& payload, const std::string& context, ui
     in.Fail("resolution ", level.resolution, ", expected ", expected_resolution, " (branching^level)");
   const uint32_t count = in.Le<uint32_t>("cell count");
   if (in.remaining() / kCellBytes < count || in.remaining() != size_t(count) * kCellBytes)
-    in.Fail("cell count ", count, " needs ", size_t(count) * kCellBytes, " bytes, the chunk has ",
-            in.remaining());
+    in.Fail("cell count ", count, " needs ", size_t(count) * kCellBytes, " bytes, the chunk has ", in.remaining());
   const uint64_t total_cells = uint64_t(level.resolution) * level.resolution * level.resolution;
   if (count > total_cells) in.Fail("cell count ", count, " exceeds ", total_cells, " cells of the grid");
   level.cells.resize(count);
   for (uint32_t i = 0; i < count; ++i) {
     for (auto& c : level.cells[i]) {
       c = in.Le<uint16_t>("cell coordinate");
-      if (c >= level.resolution)
-        in.Fail("cell ", i, " coordinate ", c, " out of range [0, ", level.resolution, ")");
+      if (c >= level.resolution) in.Fail("cell ", i, " coordinate ", c, " out of range [0, ", level.resolution, ")");
     }
   }
   level.density.resize(count);
@@ -288,8 +289,8 @@ VtreeLevel ParseCells(const std::string& payload, const std::string& context, ui
   return level;
 }
 
-void ParseBillboards(const std::string& payload, const std::string& context, uint32_t index,
-                     const VtreeAsset& asset, VtreeLevel& level) {
+void ParseBillboards(const std::string& payload, const std::string& context, uint32_t index, const VtreeAsset& asset,
+                     VtreeLevel& level) {
   ByteReader in(payload, context);
   if (const auto stored = in.Le<uint32_t>("level index"); stored != index)
     in.Fail("level index ", stored, ", expected ", index);
@@ -324,21 +325,19 @@ VtreeAtlas ParseAtlas(const std::string& payload, const std::string& context, co
   atlas.tile_pitch = in.Le<uint32_t>("tile pitch");
   atlas.tiles_per_row = in.Le<uint32_t>("tiles per row");
   atlas.tile_count = in.Le<uint32_t>("tile count");
-  if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
-      atlas.width > kMaxAtlasSide || atlas.height > kMaxAtlasSide)
+  if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 || atlas.width > kMaxAtlasSide ||
+      atlas.height > kMaxAtlasSide)
     in.Fail("atlas size ", atlas.width, "x", atlas.height, " is not a multiple of 4 in [4, ", kMaxAtlasSide, "]");
   const uint32_t pitch = (uint32_t(asset.texels) + 3) / 4 * 4;
   if (atlas.tile_pitch != pitch) in.Fail("tile pitch ", atlas.tile_pitch, ", expected ", pitch);
   if (atlas.tiles_per_row == 0 || uint64_t(atlas.tiles_per_row) * pitch > atlas.width)
     in.Fail("tiles per row ", atlas.tiles_per_row, " do not fit the atlas width ", atlas.width);
   const uint32_t needed = std::max(asset.colour_codebook_size, asset.alpha_codebook_size);
-  if (atlas.tile_count < needed)
-    in.Fail("tile count ", atlas.tile_count, " is less than the codebook size ", needed);
+  if (atlas.tile_count < needed) in.Fail("tile count ", atlas.tile_count, " is less than the codebook size ", needed);
   const uint64_t rows = (uint64_t(atlas.tile_count) + atlas.tiles_per_row - 1) / atlas.tiles_per_row;
   if (rows * pitch > atlas.height) in.Fail(atlas.tile_count, " tiles do not fit the atlas height ", atlas.height);
   const size_t bytes = size_t(atlas.width) * atlas.height;  // DXT5: 16 bytes per 16 texels
-  if (in.remaining() != bytes)
-    in.Fail("DXT5 data has ", in.remaining(), " bytes, expected ", bytes);
+  if (in.remaining() != bytes) in.Fail("DXT5 data has ", in.remaining(), " bytes, expected ", bytes);
   const auto data = in.Take(bytes, "DXT5 data");
   atlas.dxt5.assign(data.begin(), data.end());
   return atlas;
@@ -390,8 +389,7 @@ VtreeAsset ParseAsset(std::string_view bytes, const std::string& name, const Vtr
   auto next = [&](const char* expected) {
     if (file.remaining() == 0) Fail(name, ": truncated at byte ", file.offset(), ": expected chunk ", expected);
     Chunk chunk = ReadChunkHeader(file);
-    if (chunk.tag != expected)
-      Fail(ChunkContext(name, chunk), ": unexpected chunk, expected ", expected);
+    if (chunk.tag != expected) Fail(ChunkContext(name, chunk), ": unexpected chunk, expected ", expected);
     return std::pair<Chunk, std::string>(chunk, Unpack(chunk, name, options));
   };
 
@@ -419,7 +417,8 @@ VtreeAsset ParseAsset(std::string_view bytes, const std::string& name, const Vtr
     const auto [chunk, payload] = next("ATLS");
     asset.atlas = ParseAtlas(payload, ChunkContext(name, chunk), asset);
   }
-  if (file.remaining() != 0) Fail(name, ": ", file.remaining(), " unexpected bytes after the last chunk at byte ", file.offset());
+  if (file.remaining() != 0)
+    Fail(name, ": ", file.remaining(), " unexpected bytes after the last chunk at byte ", file.offset());
   return asset;
 }
 
@@ -438,8 +437,8 @@ std::vector<VtreeChunkInfo> ListChunks(std::string_view bytes, const std::string
   std::vector<VtreeChunkInfo> chunks;
   while (file.remaining() > 0) {
     const Chunk chunk = ReadChunkHeader(file);
-    chunks.push_back({chunk.tag, chunk.offset, kChunkHeaderBytes + chunk.stored_size, chunk.raw_size,
-                      chunk.encoding == kZstd});
+    chunks.push_back(
+        {chunk.tag, chunk.offset, kChunkHeaderBytes + chunk.stored_size, chunk.raw_size, chunk.encoding == kZstd});
   }
   return chunks;
 }

@@ -40,10 +40,10 @@ struct VtreeBillboard {
 };
 
 struct VtreeLevel {
-  uint32_t resolution = 1;                      // cells per axis: branching^level
-  std::vector<std::array<uint16_t, 3>> cells;   // integer cell coordinates
-  std::vector<float> density;                   // sigma per cell, per unit length
-  std::vector<VtreeBillboard> billboards;       // sorted by (cell, view); pruned ones absent
+  uint32_t resolution = 1;                     // cells per axis: branching^level
+  std::vector<std::array<uint16_t, 3>> cells;  // integer cell coordinates
+  std::vector<float> density;                  // sigma per cell, per unit length
+  std::vector<VtreeBillboard> billboards;      // sorted by (cell, view); pruned ones absent
   uint64_t billboards_before_pruning = 0;
 };
 
@@ -58,8 +58,8 @@ struct VtreeAtlas {
   uint32_t width = 0, height = 0;  // texels, multiples of 4
   uint32_t tile_pitch = 4;         // texels per tile side: the billboard size rounded up to 4
   uint32_t tiles_per_row = 0;
-  uint32_t tile_count = 0;         // max(colour codebook, alpha codebook)
-  std::vector<uint8_t> dxt5;       // width * height bytes
+  uint32_t tile_count = 0;    // max(colour codebook, alpha codebook)
+  std::vector<uint8_t> dxt5;  // width * height bytes
 
   // Top-left texel of tile i.
   std::array<uint32_t, 2> TileOrigin(uint32_t tile) const {
@@ -69,9 +69,9 @@ struct VtreeAtlas {
 
 struct VtreeAsset {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // min corner of the root cube
-  double size = 1;                                    // root cube edge
+  double size = 1;                                   // root cube edge
   int branching = 2;
-  int texels = 4;                                     // n: billboards are n x n
+  int texels = 4;                                        // n: billboards are n x n
   Eigen::Vector3d bounds_min = Eigen::Vector3d::Zero();  // of the kept finest cells
   Eigen::Vector3d bounds_max = Eigen::Vector3d::Zero();
   std::vector<VtreeView> views;
@@ -87,9 +87,9 @@ struct VtreeAsset {
 };
 
 struct VtreeWriteOptions {
-  bool zstd = false;     // compress chunk payloads (not HEAD) with zstd
+  bool zstd = false;  // compress chunk payloads (not HEAD) with zstd
   int zstd_level = 19;
-  bool force = false;    // overwrite an existing file
+  bool force = false;  // overwrite an existing file
 };
 
 struct VtreeReadOptions {

@@ -51,7 +51,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const voltree::ColmapModel model = voltree::ReadColmapModel(folder);
     (void)model.Views();
-  } catch (const voltree::Error&) {
-  }
+  } catch (const voltree::Error&) {}
   return 0;
 }

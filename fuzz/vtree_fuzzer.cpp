@@ -18,7 +18,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const voltree::VtreeAsset asset = voltree::ParseAsset(bytes, "fuzz.vtree", options);
     // A parsed asset must be internally consistent enough to serialize again.
     (void)voltree::SerializeAsset(asset);
-  } catch (const voltree::Error&) {
-  }
+  } catch (const voltree::Error&) {}
   return 0;
 }

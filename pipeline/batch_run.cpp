@@ -31,7 +31,8 @@ long long PhysicalMemoryMb() {
 // Snakemake's table of the jobs it plans ("Job stats:" to the end of the table).
 std::string JobTable(const std::string& log) {
   const size_t start = log.find("Job stats:");
-  if (start == std::string::npos) return log.find("Nothing to be done") != std::string::npos ? "Nothing to be done.\n" : "";
+  if (start == std::string::npos)
+    return log.find("Nothing to be done") != std::string::npos ? "Nothing to be done.\n" : "";
   const size_t end = log.find("\n\n", start);
   return log.substr(start, end == std::string::npos ? std::string::npos : end - start + 1);
 }
@@ -88,8 +89,9 @@ fs::path FindSnakemakeProfile(const std::string& profile, const std::string& hom
 std::vector<std::string> SnakemakeArguments(const BatchOptions& options, const fs::path& profile) {
   const fs::path root = fs::absolute(options.root);
   const fs::path snakefile = fs::absolute(options.snakefile);
-  std::vector<std::string> args = {"--snakefile", snakefile.string(), "--directory", root.string(), "--configfile",
-                                   (snakefile.parent_path() / "config.yaml").string()};
+  std::vector<std::string> args = {"--snakefile",  snakefile.string(),
+                                   "--directory",  root.string(),
+                                   "--configfile", (snakefile.parent_path() / "config.yaml").string()};
   if (fs::is_regular_file(root / "batch.yaml")) args.push_back((root / "batch.yaml").string());
   args.push_back((root / kBatchFolder / "config.json").string());
   // One failed capture must not stop the others; an interrupted job is redone.
@@ -101,8 +103,8 @@ std::vector<std::string> SnakemakeArguments(const BatchOptions& options, const f
   } else {
     // This machine's cores shared by `jobs` captures at once; memory as the jobs declare it.
     const int cores = std::max(MachineCores(options), options.jobs);
-    args.insert(args.end(), {"--cores", std::to_string(cores), "--max-threads",
-                             std::to_string(std::max(1, cores / options.jobs))});
+    args.insert(args.end(),
+                {"--cores", std::to_string(cores), "--max-threads", std::to_string(std::max(1, cores / options.jobs))});
     if (const long long memory = PhysicalMemoryMb(); memory > 0)
       args.insert(args.end(), {"--resources", Str("mem_mb=", memory)});
   }
@@ -127,7 +129,8 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
   }
   // The batch writes ROOT/scene.json; one there before any batch ran is the user's.
   if (fs::exists(root / "scene.json") && !fs::exists(root / kBatchFolder))
-    Fail((root / "scene.json").string(), ": exists and was not written by a batch; move it away (the batch writes "
+    Fail((root / "scene.json").string(),
+         ": exists and was not written by a batch; move it away (the batch writes "
          "the scene of its trees there)");
 
   BatchResult result;
@@ -144,7 +147,8 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
   result.jobs = JobTable(log);
   result.captures = int(folders.captures.size());
 
-  const std::map<std::string, std::string> planned = options.dry_run ? PlannedStages(log) : std::map<std::string, std::string>{};
+  const std::map<std::string, std::string> planned =
+      options.dry_run ? PlannedStages(log) : std::map<std::string, std::string>{};
   for (const std::string& tree : folders.captures) {
     result.rows.push_back(SummarizeCapture(root, tree, options.dry_run));
     if (const auto stage = planned.find(tree); stage != planned.end()) {  // outputs there, but out of date
@@ -169,7 +173,8 @@ BatchResult RunBatch(const BatchOptions& options, Progress& progress) {
   if (!child.ok() && result.failed == 0)
     Fail("snakemake failed (", child.signal ? Str("signal ", child.signal) : Str("exit status ", child.exit_code),
          "); the end of its log ", result.snakemake_log.string(), ":\n", LogTail(result.snakemake_log, 25));
-  if (!options.dry_run && result.failed == 0 && fs::is_regular_file(root / "scene.json")) result.scene = root / "scene.json";
+  if (!options.dry_run && result.failed == 0 && fs::is_regular_file(root / "scene.json"))
+    result.scene = root / "scene.json";
   return result;
 }
 

@@ -14,26 +14,26 @@
 namespace voltree {
 
 struct BatchOptions {
-  std::filesystem::path root;      // folders ROOT/TREE/images/
-  int jobs = 1;                    // jobs at once; locally the cores are split between them
-  bool jobs_given = false;         // with a profile, -j overrides the profile's own `jobs` only when given
-  std::string profile;             // a Snakemake profile (folder or name); empty: run on this machine
-  bool dry_run = false;            // print the planned jobs, run nothing
-  std::filesystem::path voltree;   // the binary the workflow's jobs run
-  std::filesystem::path snakefile; // workflows/Snakefile
-  std::string search_path;         // where to look for `snakemake` ($PATH)
-  std::string home;                // $HOME: profiles in ~/.config/snakemake/
-  int cores = 0;                   // this machine's cores (0: as the system says)
+  std::filesystem::path root;       // folders ROOT/TREE/images/
+  int jobs = 1;                     // jobs at once; locally the cores are split between them
+  bool jobs_given = false;          // with a profile, -j overrides the profile's own `jobs` only when given
+  std::string profile;              // a Snakemake profile (folder or name); empty: run on this machine
+  bool dry_run = false;             // print the planned jobs, run nothing
+  std::filesystem::path voltree;    // the binary the workflow's jobs run
+  std::filesystem::path snakefile;  // workflows/Snakefile
+  std::string search_path;          // where to look for `snakemake` ($PATH)
+  std::string home;                 // $HOME: profiles in ~/.config/snakemake/
+  int cores = 0;                    // this machine's cores (0: as the system says)
   void Check() const;
 };
 
 struct BatchResult {
   std::vector<CaptureSummary> rows;  // captures, then skipped folders
   std::filesystem::path snakemake_log;
-  std::string jobs;                  // snakemake's table of the jobs it planned, or "Nothing to be done."
+  std::string jobs;  // snakemake's table of the jobs it planned, or "Nothing to be done."
   int captures = 0;
-  std::filesystem::path scene;       // ROOT/scene.json when the batch wrote it
-  std::filesystem::path scene_log;   // the scene rule's log when it failed (a bad survey CSV)
+  std::filesystem::path scene;      // ROOT/scene.json when the batch wrote it
+  std::filesystem::path scene_log;  // the scene rule's log when it failed (a bad survey CSV)
   int failed = 0;
 };
 

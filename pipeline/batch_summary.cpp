@@ -55,11 +55,16 @@ std::string Cell(double value, int decimals) {
 
 const char* CaptureStatusName(CaptureStatus status) {
   switch (status) {
-    case CaptureStatus::kBuilt: return "built";
-    case CaptureStatus::kFailed: return "FAILED";
-    case CaptureStatus::kNotRun: return "not run";
-    case CaptureStatus::kPlanned: return "to do";
-    case CaptureStatus::kSkipped: return "skipped";
+    case CaptureStatus::kBuilt:
+      return "built";
+    case CaptureStatus::kFailed:
+      return "FAILED";
+    case CaptureStatus::kNotRun:
+      return "not run";
+    case CaptureStatus::kPlanned:
+      return "to do";
+    case CaptureStatus::kSkipped:
+      return "skipped";
   }
   return "?";
 }
@@ -108,17 +113,15 @@ CaptureSummary SkippedFolder(const std::string& name) {
 }
 
 std::string FormatBatchSummary(const std::vector<CaptureSummary>& rows) {
-  std::vector<std::vector<std::string>> table = {
-      {"tree", "status", "registered", "held-out PSNR", "asset bytes"}};
+  std::vector<std::vector<std::string>> table = {{"tree", "status", "registered", "held-out PSNR", "asset bytes"}};
   for (const char* stage : kBatchStages) table[0].push_back(std::string(stage) + " s");
   for (const CaptureSummary& row : rows) {
     std::string status = CaptureStatusName(row.status);
     if (!row.detail.empty()) status += " (" + row.detail + ")";
-    std::vector<std::string> cells = {
-        row.tree, status,
-        row.registered >= 0 ? Str(row.registered, "/", row.photos) : "-",
-        row.held_out_rgb_psnr ? Cell(*row.held_out_rgb_psnr, 2) + " dB" : "-",
-        row.asset_bytes ? std::to_string(*row.asset_bytes) : "-"};
+    std::vector<std::string> cells = {row.tree, status,
+                                      row.registered >= 0 ? Str(row.registered, "/", row.photos) : "-",
+                                      row.held_out_rgb_psnr ? Cell(*row.held_out_rgb_psnr, 2) + " dB" : "-",
+                                      row.asset_bytes ? std::to_string(*row.asset_bytes) : "-"};
     for (const char* stage : kBatchStages) {
       const auto seconds = row.stage_seconds.find(stage);
       cells.push_back(seconds == row.stage_seconds.end() ? "-" : Cell(seconds->second, 1));
@@ -139,8 +142,7 @@ std::string FormatBatchSummary(const std::vector<CaptureSummary>& rows) {
     text += line + "\n";
   }
   for (const CaptureSummary& row : rows)
-    if (row.status == CaptureStatus::kFailed)
-      text += Str(row.tree, ": ", row.detail, " failed; log: ", row.log, "\n");
+    if (row.status == CaptureStatus::kFailed) text += Str(row.tree, ": ", row.detail, " failed; log: ", row.log, "\n");
   return text;
 }
 

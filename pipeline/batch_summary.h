@@ -22,10 +22,10 @@ const char* CaptureStatusName(CaptureStatus status);
 struct CaptureSummary {
   std::string tree;
   CaptureStatus status = CaptureStatus::kNotRun;
-  std::string detail;  // the stage that failed or comes next; why a folder was skipped
-  std::string log;     // a failed stage's log (under the batch root)
-  int registered = -1;  // photos with a camera in sparse/ (-1: unknown)
-  int photos = -1;      // photos in images/
+  std::string detail;                       // the stage that failed or comes next; why a folder was skipped
+  std::string log;                          // a failed stage's log (under the batch root)
+  int registered = -1;                      // photos with a camera in sparse/ (-1: unknown)
+  int photos = -1;                          // photos in images/
   std::optional<double> held_out_rgb_psnr;  // mean over truth/'s views (report/metrics.json)
   std::optional<std::uintmax_t> asset_bytes;
   std::map<std::string, double> stage_seconds;  // stages that ran, by name

@@ -102,13 +102,14 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
     CompressWorkspaceOptions where;
     where.compress = options.compress;
     where.source_name = options.output.lexically_normal().filename().string();  // not the staging folder's
-    if (where.source_name.empty()) where.source_name = options.output.lexically_normal().parent_path().filename().string();
+    if (where.source_name.empty())
+      where.source_name = options.output.lexically_normal().parent_path().filename().string();
     compress_stats = CompressWorkspace(workspace, where, progress).stats;
   });
   if (options.orbit.frames > 0)
     timed("orbit", [&] {
-      const RenderJobResult orbit = RenderOrbitFrames(workspace / "tree.vtree", workspace / "report" / "orbit",
-                                                      options.orbit, progress);
+      const RenderJobResult orbit =
+          RenderOrbitFrames(workspace / "tree.vtree", workspace / "report" / "orbit", options.orbit, progress);
       summary["orbit"] = {{"frames", orbit.frames.size()},
                           {"size", options.orbit.size},
                           {"median_ms_per_frame", orbit.median_ms},

@@ -107,7 +107,8 @@ void InstallDemoFolder(const fs::path& built, const fs::path& output, bool force
   for (const auto& [relative, crc] : fresh.files) {
     const fs::path target = output / relative;
     if (fs::exists(target) && !WrittenByPreviousDemo(output, previous, relative))
-      Fail(target.string(), " is not a file the demo wrote (or it was changed since); the demo never replaces "
+      Fail(target.string(),
+           " is not a file the demo wrote (or it was changed since); the demo never replaces "
            "your files: move it away or choose another --output");
   }
   // From here on, the marker lists everything the demo may have written, so an interrupted

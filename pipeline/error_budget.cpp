@@ -37,11 +37,12 @@ Image8 VolumeAlpha(const Volume& volume, const View& camera) {
     for (int x = 0; x < out.width; ++x) {
       const Ray ray{camera.pose.Center(), camera.PixelRay({x + 0.5, y + 0.5})};
       double depth = 0;
-      TraverseGrid(window, ray, 0.0, std::numeric_limits<double>::infinity(), [&](int i, int j, int k, double l, double) {
-        const int32_t c = cells.Find(i, j, k);
-        if (c >= 0) depth += level.density[c] * l;
-        return true;
-      });
+      TraverseGrid(window, ray, 0.0, std::numeric_limits<double>::infinity(),
+                   [&](int i, int j, int k, double l, double) {
+                     const int32_t c = cells.Find(i, j, k);
+                     if (c >= 0) depth += level.density[c] * l;
+                     return true;
+                   });
       out.at(x, y, 3) = uint8_t(std::lround(255 * (1 - std::exp(-depth))));
     }
   });
@@ -67,8 +68,15 @@ struct Sum {
   }
   BudgetRow Row(std::string step, ViewSet set, bool colour) const {
     const double n = std::max(views, 1), nan = std::numeric_limits<double>::quiet_NaN();
-    return {std::move(step), set,           views,        colour ? rgb / n : nan,        alpha / n,
-            precision / n,   recall / n,    parted ? bark / parted : nan, parted ? leaf / parted : nan};
+    return {std::move(step),
+            set,
+            views,
+            colour ? rgb / n : nan,
+            alpha / n,
+            precision / n,
+            recall / n,
+            parted ? bark / parted : nan,
+            parted ? leaf / parted : nan};
   }
 };
 
@@ -101,7 +109,8 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
   const int finest = int(volume.levels.size()) - 1;
   if (asset.levels.size() != volume.levels.size() || asset.views.size() != volume.views.size() ||
       asset.levels.back().billboards.size() != volume.levels.back().billboards.size())
-    Fail(volume_path.string(), " does not match the asset (levels, views or billboards differ): rebuild the asset "
+    Fail(volume_path.string(),
+         " does not match the asset (levels, views or billboards differ): rebuild the asset "
          "from this volume ('voltree compress --force') before measuring its budget");
 
   // The codewords before DXT5: recompress with the asset's recorded options (same codebooks).
@@ -167,7 +176,9 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
 
 std::string BudgetTable(const std::vector<BudgetRow>& rows) {
   std::string out = "step        views     count  RGB PSNR  alpha PSNR      P      R  bark R  leaf R\n";
-  auto optional = [](double value, int digits) { return std::isnan(value) ? std::string("-") : FixedDecimals(value, digits); };
+  auto optional = [](double value, int digits) {
+    return std::isnan(value) ? std::string("-") : FixedDecimals(value, digits);
+  };
   for (const BudgetRow& r : rows) {
     char line[200];
     std::snprintf(line, sizeof line, "%-11s %-9s %5d  %8s  %10s  %.3f  %.3f  %6s  %6s\n", r.step.c_str(),

@@ -53,8 +53,8 @@ std::vector<std::string> OrbitThumbnails(const fs::path& report, size_t count) {
 // The truth an evaluation compares with.
 struct EvaluationTruth {
   std::optional<std::vector<TruthView>> held_out;  // none without WORKSPACE/truth
-  std::vector<TruthView> inputs;                    // none when input views are off
-  std::optional<TruthAlignment> alignment;          // when the held-out cameras were moved
+  std::vector<TruthView> inputs;                   // none when input views are off
+  std::optional<TruthAlignment> alignment;         // when the held-out cameras were moved
   std::vector<std::string> notes;
 };
 
@@ -65,7 +65,8 @@ EvaluationTruth GatherTruth(const EvaluateOptions& options) {
   truth.held_out = HeldOutTruth(workspace);
   if (truth.held_out && truth.alignment) ApplyAlignment(*truth.alignment, &*truth.held_out);
   if (!truth.held_out)
-    truth.notes.push_back(Str("no held-out truth (", (workspace / "truth").string(), " does not exist): "
+    truth.notes.push_back(Str("no held-out truth (", (workspace / "truth").string(),
+                              " does not exist): "
                               "input views only, which measures self-consistency, not generalization"));
   if (options.input_views) truth.inputs = InputTruth(workspace);
   if (!truth.held_out && truth.inputs.empty()) Fail("eval: nothing to compare: no truth/ and input views are off");
@@ -77,8 +78,13 @@ EvaluationTruth GatherTruth(const EvaluateOptions& options) {
 EvaluatedAsset DescribeAsset(const VtreeAsset& asset, const fs::path& asset_path, const fs::path& workspace) {
   const fs::path relative = asset_path.lexically_relative(workspace);
   const bool inside = !relative.empty() && *relative.begin() != "..";
-  return {inside ? relative.string() : asset_path.string(), fs::file_size(asset_path), asset.levels.size(),
-          asset.CellCount(), asset.BillboardCount(), asset.colour_codebook_size, asset.alpha_codebook_size};
+  return {inside ? relative.string() : asset_path.string(),
+          fs::file_size(asset_path),
+          asset.levels.size(),
+          asset.CellCount(),
+          asset.BillboardCount(),
+          asset.colour_codebook_size,
+          asset.alpha_codebook_size};
 }
 
 TreeRenderOptions AutoLod(const LodOptions& lod) {
@@ -89,8 +95,12 @@ TreeRenderOptions AutoLod(const LodOptions& lod) {
 }
 
 EvaluationRenderSettings RenderSettings(const EvaluateOptions& options, const VtreeAsset& asset, fs::path staging) {
-  return {LevelChoices(int(asset.levels.size()), options.each_level), options.metrics, options.lod, options.images,
-          options.difference_gain, std::move(staging)};
+  return {LevelChoices(int(asset.levels.size()), options.each_level),
+          options.metrics,
+          options.lod,
+          options.images,
+          options.difference_gain,
+          std::move(staging)};
 }
 
 // What is known before anything is rendered.
@@ -165,7 +175,8 @@ void EvaluateOptions::Check() const {
   if (!fs::is_directory(workspace)) Fail(workspace.string(), ": no such workspace folder");
   metrics.Check();
   lod.Check();
-  if (lod.forced_level >= 0) Fail("eval: lod.forced_level = ", lod.forced_level, "; per-level renders are chosen by each_level");
+  if (lod.forced_level >= 0)
+    Fail("eval: lod.forced_level = ", lod.forced_level, "; per-level renders are chosen by each_level");
   if (!(difference_gain > 0)) Fail("eval: difference_gain = ", difference_gain, ", expected > 0");
 }
 
@@ -183,7 +194,8 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   const VtreeAsset asset = ReadAsset(asset_path);
   GlContext context;
   TreeRenderer renderer(asset);
-  EvaluationReport report = StartReport(options, truth, DescribeAsset(asset, asset_path, workspace), context.renderer());
+  EvaluationReport report =
+      StartReport(options, truth, DescribeAsset(asset, asset_path, workspace), context.renderer());
 
   CreatedFolder report_folder(folder);
   StagedDirectory staged(folder / kEvalFolderName, /*force=*/true);  // ownership checked above
@@ -212,11 +224,12 @@ EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progr
   report_folder.Keep();
 
   WriteFileAtomic(folder / kMetricsJsonName, MetricsJson(report).dump(2) + "\n");
-  WriteFileAtomic(folder / kIndexHtmlName,
-                  ReportHtml(EvaluationPage(report, OrbitThumbnails(folder, 12), fs::exists(folder / "contact_sheet.png"))));
+  WriteFileAtomic(folder / kIndexHtmlName, ReportHtml(EvaluationPage(report, OrbitThumbnails(folder, 12),
+                                                                     fs::exists(folder / "contact_sheet.png"))));
   EvaluateResult result = ResultOf(std::move(report), folder, renders.render_seconds);
   result.seconds = progress.ElapsedSeconds() - start;
-  progress.Say("eval", Str("wrote ", result.index_html.string(), " (rendering ", std::round(result.render_seconds * 10) / 10, " s)"));
+  progress.Say("eval", Str("wrote ", result.index_html.string(), " (rendering ",
+                           std::round(result.render_seconds * 10) / 10, " s)"));
   return result;
 }
 

@@ -29,13 +29,13 @@ struct EvaluateOptions {
   // Fixed grey (8-bit units) that truth and render are composited over for the RGB metrics, the
   // alpha threshold of "covered" pixels, SSIM window. Premultiplication is set per view.
   ImageMetricsOptions metrics;
-  LodOptions lod;                 // the "auto" renders (screen rule, a texel per pixel)
-  bool each_level = true;         // also render every octree level forced, 0..finest
-  bool input_views = true;        // also compare at the input cameras (self-consistency)
-  bool images = true;             // side-by-side PNGs of the held-out views
-  bool plots = true;              // gnuplot PNGs (skipped with a note when gnuplot is missing)
-  bool budget = false;            // also measure the error budget (error_budget.h; needs WORKSPACE/volume)
-  float difference_gain = 4;      // the difference images show |truth - render| x gain
+  LodOptions lod;             // the "auto" renders (screen rule, a texel per pixel)
+  bool each_level = true;     // also render every octree level forced, 0..finest
+  bool input_views = true;    // also compare at the input cameras (self-consistency)
+  bool images = true;         // side-by-side PNGs of the held-out views
+  bool plots = true;          // gnuplot PNGs (skipped with a note when gnuplot is missing)
+  bool budget = false;        // also measure the error budget (error_budget.h; needs WORKSPACE/volume)
+  float difference_gain = 4;  // the difference images show |truth - render| x gain
   // Optional measured series for plots; empty: REPORT/codebook_sweep.json, REPORT/scene_bench.json
   // when they exist (formats in docs/evaluate.md).
   std::filesystem::path codebook_sweep;
@@ -44,7 +44,7 @@ struct EvaluateOptions {
   // How the workspace is named in metrics.json and on the page (default: its path); the demo
   // evaluates inside its staging folder and names the final one.
   std::string workspace_label;
-  bool force = false;              // replace metrics.json / index.html / eval/ not written by eval
+  bool force = false;  // replace metrics.json / index.html / eval/ not written by eval
 
   std::filesystem::path AssetPath() const;
   std::filesystem::path ReportPath() const;
@@ -53,7 +53,7 @@ struct EvaluateOptions {
 
 struct EvaluateResult {
   LevelMetricsTable table;
-  std::vector<BudgetRow> budget;  // with options.budget
+  std::vector<BudgetRow> budget;            // with options.budget
   std::optional<TruthAlignment> alignment;  // when the truth was moved into the workspace's frame
   std::filesystem::path metrics_json, index_html;
   std::vector<std::string> plots;  // drawn, relative to the report folder

@@ -60,7 +60,8 @@ nlohmann::json LevelMetricsTable::ToJson() const {
   nlohmann::json overall = nlohmann::json::object();
   nlohmann::json levels = nlohmann::json::array();
   for (size_t i = 0; i < choices_.size(); ++i) {
-    nlohmann::json entry = {{"level", choices_[i].IsAuto() ? nlohmann::json("auto") : nlohmann::json(choices_[i].forced_level)}};
+    nlohmann::json entry = {
+        {"level", choices_[i].IsAuto() ? nlohmann::json("auto") : nlohmann::json(choices_[i].forced_level)}};
     for (ViewSet set : {ViewSet::kHeldOut, ViewSet::kInput}) {
       const MetricsReport& report = (set == ViewSet::kHeldOut ? held_out_ : input_)[i];
       if (report.views.empty()) continue;

@@ -44,7 +44,8 @@ class LevelMetricsTable {
 
   // (level, mean over the set's views of `metric`) for every forced level that has views, coarse
   // to fine: the data of the per-level plots. Non-finite means (an identical view) are left out.
-  std::vector<std::pair<int, double>> MeanPerLevel(ViewSet set, const std::function<double(const ViewMetrics&)>& metric) const;
+  std::vector<std::pair<int, double>> MeanPerLevel(ViewSet set,
+                                                   const std::function<double(const ViewMetrics&)>& metric) const;
 
   // {"overall": {"held_out": summary, "input": summary},
   //  "levels": [{"level": "auto"|L, "held_out": MetricsReport, "input": MetricsReport}, ...]}

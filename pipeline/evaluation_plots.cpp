@@ -21,14 +21,16 @@ PlotSpec MakePlot(std::string file, std::string title, std::string x_label, std:
 std::vector<PlotSpec> EvaluationPlotSpecs(const LevelMetricsTable& table, const PruningStats& pruning,
                                           const fs::path& codebook_sweep, const fs::path& scene_bench) {
   std::vector<PlotSpec> specs;
-  PlotSpec pruned = MakePlot("pruned_per_level.png", "Billboards pruned per level (reconstruct)", "octree level", "pruned %");
+  PlotSpec pruned =
+      MakePlot("pruned_per_level.png", "Billboards pruned per level (reconstruct)", "octree level", "pruned %");
   pruned.style = PlotStyle::kBars, pruned.integer_x = true;
   PlotSeries pruned_series{"pruned %", {}};
   for (const LevelPruning& level : pruning.levels) pruned_series.points.emplace_back(level.level, level.pruned_percent);
   pruned.series.push_back(pruned_series);
   specs.push_back(pruned);
 
-  PlotSpec psnr = MakePlot("psnr_per_level.png", "RGB PSNR per forced level (over grey)", "octree level", "RGB PSNR (dB)");
+  PlotSpec psnr =
+      MakePlot("psnr_per_level.png", "RGB PSNR per forced level (over grey)", "octree level", "RGB PSNR (dB)");
   psnr.integer_x = true;
   const auto rgb = [](const ViewMetrics& m) { return m.rgb_psnr; };
   const auto alpha = [](const ViewMetrics& m) { return m.alpha_psnr; };
@@ -47,13 +49,15 @@ std::vector<PlotSpec> EvaluationPlotSpecs(const LevelMetricsTable& table, const 
                        {"input views", to_points(table.MeanPerLevel(ViewSet::kInput, alpha))}};
   specs.push_back(alpha_psnr);
 
-  PlotSpec codebook = MakePlot("psnr_vs_codebook.png", "PSNR vs colour codebook size", "colour codebook size", "PSNR (dB)");
+  PlotSpec codebook =
+      MakePlot("psnr_vs_codebook.png", "PSNR vs colour codebook size", "colour codebook size", "PSNR (dB)");
   codebook.log_x = true;
   codebook.series = ReadSeriesFile(codebook_sweep, {"codebook", "colour_codebook", "codebook_size"},
                                    {"rgb_psnr", "psnr", "psnr_db"}, "PSNR");
   specs.push_back(codebook);
 
-  PlotSpec scene = MakePlot("ms_per_frame_vs_trees.png", "Frame time vs trees in the scene", "trees", "ms per frame (median)");
+  PlotSpec scene =
+      MakePlot("ms_per_frame_vs_trees.png", "Frame time vs trees in the scene", "trees", "ms per frame (median)");
   scene.series = ReadSeriesFile(scene_bench, {"trees", "instances"}, {"median_ms", "ms_per_frame"}, "median ms");
   specs.push_back(scene);
   return specs;

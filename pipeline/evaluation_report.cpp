@@ -40,10 +40,15 @@ json AlignmentJson(const std::optional<TruthAlignment>& alignment) {
 json BudgetJson(const std::vector<BudgetRow>& budget) {
   json rows = json::array();
   for (const BudgetRow& row : budget)
-    rows.push_back({{"step", row.step}, {"views", ViewSetName(row.set)}, {"count", row.views},
-                    {"rgb_psnr", Finite(row.rgb_psnr)}, {"alpha_psnr", Finite(row.alpha_psnr)},
-                    {"precision", row.precision}, {"recall", row.recall},
-                    {"bark_recall", Finite(row.bark_recall)}, {"leaf_recall", Finite(row.leaf_recall)}});
+    rows.push_back({{"step", row.step},
+                    {"views", ViewSetName(row.set)},
+                    {"count", row.views},
+                    {"rgb_psnr", Finite(row.rgb_psnr)},
+                    {"alpha_psnr", Finite(row.alpha_psnr)},
+                    {"precision", row.precision},
+                    {"recall", row.recall},
+                    {"bark_recall", Finite(row.bark_recall)},
+                    {"leaf_recall", Finite(row.leaf_recall)}});
   return rows;
 }
 

@@ -31,7 +31,7 @@ struct EvaluatedAsset {
 struct EvaluationReport {
   std::string workspace;  // as the page and metrics.json name it
   EvaluatedAsset asset;
-  std::string renderer;   // GL_RENDERER
+  std::string renderer;  // GL_RENDERER
   ImageMetricsOptions metrics;
   LodOptions lod;
   float difference_gain = 4;

@@ -55,7 +55,10 @@ std::optional<std::vector<TruthView>> HeldOutTruth(const fs::path& workspace) {
   std::vector<TruthView> views;
   for (const View& camera : ModelViews(truth / "sparse")) {
     const fs::path parts = Companion(truth, "parts", camera.name);
-    views.push_back({camera, Companion(truth, "rgba", camera.name), {}, /*premultiplied=*/true,
+    views.push_back({camera,
+                     Companion(truth, "rgba", camera.name),
+                     {},
+                     /*premultiplied=*/true,
                      fs::exists(parts) ? parts : fs::path()});
   }
   return views;

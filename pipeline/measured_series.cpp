@@ -39,8 +39,8 @@ PruningStats ReadPruningStats(const fs::path& workspace, const VtreeAsset& asset
         stats.levels.push_back({level.at("level").get<int>(), level.at("billboards_before_pruning").get<uint64_t>(),
                                 level.at("billboards").get<uint64_t>(), level.at("pruned_percent").get<double>()});
     } catch (const nlohmann::json::exception& e) {
-      Fail(volume_json.string(), ": field 'levels' (level, billboards_before_pruning, billboards, pruned_percent): ",
-           e.what());
+      Fail(volume_json.string(),
+           ": field 'levels' (level, billboards_before_pruning, billboards, pruned_percent): ", e.what());
     }
     stats.source = "volume/volume.json";  // relative: the workspace may still be a staging folder
     return stats;
@@ -48,7 +48,8 @@ PruningStats ReadPruningStats(const fs::path& workspace, const VtreeAsset& asset
   for (size_t l = 0; l < asset.levels.size(); ++l) {
     const VtreeLevel& level = asset.levels[l];
     const uint64_t before = level.billboards_before_pruning, kept = level.billboards.size();
-    stats.levels.push_back({int(l), before, kept, before ? 100.0 * double(before - std::min(before, kept)) / double(before) : 0.0});
+    stats.levels.push_back(
+        {int(l), before, kept, before ? 100.0 * double(before - std::min(before, kept)) / double(before) : 0.0});
   }
   stats.source = asset_path.string();
   return stats;

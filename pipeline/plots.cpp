@@ -17,8 +17,10 @@ namespace {
 std::string Quote(const std::string& text) {
   std::string out = "'";
   for (char c : text) {
-    if (c == '\'') out += "''";
-    else if (c != '\n') out += c;
+    if (c == '\'')
+      out += "''";
+    else if (c != '\n')
+      out += c;
   }
   return out + "'";
 }
@@ -95,8 +97,8 @@ void DrawPlot(const Gnuplot& gnuplot, const PlotSpec& spec, const fs::path& fold
   // The script names the PNG by its file name and gnuplot runs in the folder, so the kept
   // script redraws the plot wherever the report is moved.
   WriteFileAtomic(script, GnuplotScript(spec, gnuplot.terminal, spec.file));
-  const ChildResult result =
-      RunChild(gnuplot.program, {"-e", Str("cd ", Quote(fs::absolute(folder).string())), fs::absolute(script).string()}, log);
+  const ChildResult result = RunChild(
+      gnuplot.program, {"-e", Str("cd ", Quote(fs::absolute(folder).string())), fs::absolute(script).string()}, log);
   if (!result.ok() || !fs::exists(output))
     Fail("gnuplot failed drawing ", output.string(), " (log ", log.string(), "):\n", LogTail(log, 8));
   std::error_code ignored;

@@ -52,16 +52,16 @@ std::vector<ViewReproduction> MeasureReproduction(const Volume& volume, const st
     small.camera = view.camera.Resized(std::max(1, int(std::lround(matte.width * shrink))),
                                        std::max(1, int(std::lround(matte.height * shrink))));
     const ViewBlend alone{int(own - volume.views.begin()), -1, 1, 0};
-    const ImageF drawn =
-        CompositeLayers(RasterizeLevel(volume, level, small, alone, options.billboard_scale), volume.levels[level].texels);
+    const ImageF drawn = CompositeLayers(RasterizeLevel(volume, level, small, alone, options.billboard_scale),
+                                         volume.levels[level].texels);
     const int width = small.camera.width, height = small.camera.height;
     size_t both = 0, in_matte = 0, in_volume = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
         const bool volume_covers = drawn.at(x, y, 3) > options.covered_alpha;
-        const bool matte_covers = MeanAlpha(matte, x * matte.width / width, y * matte.height / height,
-                                            (x + 1) * matte.width / width, (y + 1) * matte.height / height) >
-                                  options.covered_alpha;
+        const bool matte_covers =
+            MeanAlpha(matte, x * matte.width / width, y * matte.height / height, (x + 1) * matte.width / width,
+                      (y + 1) * matte.height / height) > options.covered_alpha;
         both += volume_covers && matte_covers;
         in_matte += matte_covers;
         in_volume += volume_covers;

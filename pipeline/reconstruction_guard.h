@@ -16,8 +16,8 @@
 namespace voltree {
 
 struct ReproductionOptions {
-  int max_side = 128;          // each view is compared at most this large
-  double covered_alpha = 0.5;  // alpha above which a pixel counts as covered
+  int max_side = 128;            // each view is compared at most this large
+  double covered_alpha = 0.5;    // alpha above which a pixel counts as covered
   double billboard_scale = 1.0;  // as reconstruct made the billboards
   // Limits on the mean over the views. Measured with the billboards: the demo's oak reproduces
   // its mattes at recall 0.994 and precision 0.999 (the error budget's billboards row), the

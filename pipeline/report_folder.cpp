@@ -24,7 +24,8 @@ bool EvalFolderByEval(const fs::path& folder) { return fs::is_regular_file(folde
 void CheckCanWriteReport(const fs::path& report, bool force) {
   if (fs::exists(report) && !fs::is_directory(report)) Fail(report.string(), ": exists and is not a folder");
   if (force) return;
-  const fs::path metrics = report / kMetricsJsonName, index = report / kIndexHtmlName, folder = report / kEvalFolderName;
+  const fs::path metrics = report / kMetricsJsonName, index = report / kIndexHtmlName,
+                 folder = report / kEvalFolderName;
   const char* hint = " was not written by 'voltree eval'; pass --force to replace it (or choose --report DIR)";
   if (fs::exists(metrics) && !MetricsJsonByEval(metrics)) Fail(metrics.string(), hint);
   if (fs::exists(index) && !IndexHtmlByEval(index)) Fail(index.string(), hint);

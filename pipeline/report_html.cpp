@@ -45,12 +45,23 @@ std::string HtmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -64,7 +75,8 @@ std::string ReportHtml(const ReportPage& page) {
        << "\">\n<title>" << HtmlEscape(page.title) << "</title>\n<style>" << kStyle << "</style></head><body>\n";
   html << "<h1>" << HtmlEscape(page.title) << "</h1>\n<table>\n";
   for (const auto& [what, value] : page.facts)
-    html << "<tr><td>" << HtmlEscape(what) << "</td><td style=\"text-align:left\">" << HtmlEscape(value) << "</td></tr>\n";
+    html << "<tr><td>" << HtmlEscape(what) << "</td><td style=\"text-align:left\">" << HtmlEscape(value)
+         << "</td></tr>\n";
   html << "</table>\n";
   for (const std::string& note : page.notes) html << "<p class=\"note\">" << HtmlEscape(note) << "</p>\n";
 
@@ -91,9 +103,9 @@ std::string ReportHtml(const ReportPage& page) {
     for (const BudgetRow& row : page.budget)
       html << "<tr><td>" << HtmlEscape(row.step) << "</td><td>" << ViewSetName(row.set) << "</td><td>" << row.views
            << "</td><td>" << (std::isnan(row.rgb_psnr) ? "&ndash;" : Fixed(row.rgb_psnr, 2)) << "</td><td>"
-           << Fixed(row.alpha_psnr, 2) << "</td><td>" << Fixed(row.precision, 3) << "</td><td>"
-           << Fixed(row.recall, 3) << "</td><td>" << (std::isnan(row.bark_recall) ? "&ndash;" : Fixed(row.bark_recall, 3))
-           << "</td><td>" << (std::isnan(row.leaf_recall) ? "&ndash;" : Fixed(row.leaf_recall, 3)) << "</td></tr>\n";
+           << Fixed(row.alpha_psnr, 2) << "</td><td>" << Fixed(row.precision, 3) << "</td><td>" << Fixed(row.recall, 3)
+           << "</td><td>" << (std::isnan(row.bark_recall) ? "&ndash;" : Fixed(row.bark_recall, 3)) << "</td><td>"
+           << (std::isnan(row.leaf_recall) ? "&ndash;" : Fixed(row.leaf_recall, 3)) << "</td></tr>\n";
     html << "</table>\n";
   }
 
@@ -122,7 +134,8 @@ std::string ReportHtml(const ReportPage& page) {
 
   if (!page.comparisons.empty()) {
     const bool interactive = !page.comparisons.front().interactive.empty();
-    html << "<h2>Held-out views</h2>\n<p>truth | " << (interactive ? "voltree (interactive: the web page, eval/web/) | " : "")
+    html << "<h2>Held-out views</h2>\n<p>truth | "
+         << (interactive ? "voltree (interactive: the web page, eval/web/) | " : "")
          << "voltree (auto LOD) | difference &times;" << Fixed(page.difference_gain, 0)
          << " (black: equal), all over the evaluation's grey.</p>\n";
     for (const HtmlComparison& c : page.comparisons) {
@@ -146,7 +159,8 @@ std::string ReportHtml(const ReportPage& page) {
   if (!page.thumbnails.empty()) {
     html << "<h2>Orbit</h2>\n<div class=\"strip\">";
     for (const std::string& frame : page.thumbnails)
-      html << "<a href=\"" << HtmlEscape(frame) << "\"><img src=\"" << HtmlEscape(frame) << "\" alt=\"orbit frame\"></a>";
+      html << "<a href=\"" << HtmlEscape(frame) << "\"><img src=\"" << HtmlEscape(frame)
+           << "\" alt=\"orbit frame\"></a>";
     html << "</div>\n";
   }
   if (!page.links.empty()) {

@@ -16,11 +16,11 @@
 namespace voltree {
 
 struct HtmlComparison {
-  std::string view;                        // the view's image name
-  std::string truth, render, difference;   // paths relative to the page
+  std::string view;                       // the view's image name
+  std::string truth, render, difference;  // paths relative to the page
   ViewMetrics metrics;
-  std::string interactive;                 // the web page at this view's camera (URL relative to the page), or empty
-  int interactive_height = 256;            // the frame's height for a width of 256 (the camera's aspect)
+  std::string interactive;       // the web page at this view's camera (URL relative to the page), or empty
+  int interactive_height = 256;  // the frame's height for a width of 256 (the camera's aspect)
 };
 
 struct HtmlLink {
@@ -36,10 +36,10 @@ struct ReportPage {
   std::map<int, double> pruned_percent;                    // per level, when known
   std::vector<HtmlComparison> comparisons;                 // held-out views, auto LOD
   float difference_gain = 4;
-  std::vector<HtmlLink> plots;                             // PNG files
-  std::vector<HtmlLink> links;                             // contact sheet, orbit frames, metrics.json
-  std::vector<std::string> thumbnails;                     // a strip of orbit frames, when present
-  std::vector<BudgetRow> budget;                           // eval --budget: what each step costs
+  std::vector<HtmlLink> plots;          // PNG files
+  std::vector<HtmlLink> links;          // contact sheet, orbit frames, metrics.json
+  std::vector<std::string> thumbnails;  // a strip of orbit frames, when present
+  std::vector<BudgetRow> budget;        // eval --budget: what each step costs
 };
 
 // "&<>\"'" escaped.

@@ -24,7 +24,9 @@ bool NeedsCameras(const fs::path& dir) { return !fs::is_directory(dir / "sparse"
 // matches is skipped, unless --force.
 constexpr const char* kUpToDate = "up to date: inputs and options unchanged since it ran";
 StageRecipe ReconstructRecipe(const RunOptions& options) {
-  return {"reconstruct", {"images", "mattes", "foreground", "sparse", "scene.json"}, {"volume"},
+  return {"reconstruct",
+          {"images", "mattes", "foreground", "sparse", "scene.json"},
+          {"volume"},
           options.reconstruct.ToJson().dump()};
 }
 StageRecipe CompressRecipe(const RunOptions& options) {
@@ -32,8 +34,8 @@ StageRecipe CompressRecipe(const RunOptions& options) {
 }
 StageRecipe OrbitRecipe(const RunOptions& options) {
   // Recipes name paths inside the workspace; a report elsewhere is named absolutely.
-  const fs::path orbit = options.evaluate.report.empty() ? fs::path("report") / "orbit"
-                                                         : fs::absolute(options.evaluate.report / "orbit");
+  const fs::path orbit =
+      options.evaluate.report.empty() ? fs::path("report") / "orbit" : fs::absolute(options.evaluate.report / "orbit");
   return {"orbit", {"tree.vtree"}, {orbit.string()}, Str(options.orbit.frames, " ", options.orbit.size)};
 }
 
@@ -58,8 +60,10 @@ void CheckMattes(const fs::path& dir, const RunOptions& options, Progress& progr
   for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
   CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
   if (int(views.size()) < options.consistency.min_photos) {
-    progress.Say("check", Str("only ", views.size(), " photos: their visual hull is too loose to check the mattes "
-                              "against each other (needs ", options.consistency.min_photos, ")"));
+    progress.Say("check", Str("only ", views.size(),
+                              " photos: their visual hull is too loose to check the mattes "
+                              "against each other (needs ",
+                              options.consistency.min_photos, ")"));
     return;
   }
   const MatteConsistency consistency = MeasureMatteConsistency(views, mattes, options.consistency);
@@ -108,8 +112,8 @@ void CheckRunWorkspace(const RunOptions& options) {
   if (NeedsMattes(dir) || NeedsCameras(dir)) {
     const fs::path images = dir / "images";
     const std::string why = NeedsMattes(dir) && NeedsCameras(dir) ? "mattes/ and sparse/ are missing"
-                            : NeedsMattes(dir)                   ? "mattes/ is missing"
-                                                                 : "sparse/ is missing";
+                            : NeedsMattes(dir)                    ? "mattes/ is missing"
+                                                                  : "sparse/ is missing";
     if (!fs::is_directory(images))
       Fail(images.string(), ": missing; ", why, ", so the photos of the tree are needed (PNG, JPEG, TIFF or BMP)");
     if (ListImages(images).empty()) Fail(images.string(), ": no photos (png, jpg, tif, bmp); ", why);

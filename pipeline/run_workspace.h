@@ -30,12 +30,12 @@ namespace voltree {
 
 struct RunOptions {
   std::filesystem::path workspace;
-  MatteWorkspaceOptions matte;      // used when mattes/ is missing
-  CalibrateOptions calibrate;       // used when sparse/ is missing
+  MatteWorkspaceOptions matte;  // used when mattes/ is missing
+  CalibrateOptions calibrate;   // used when sparse/ is missing
   ReconstructOptions reconstruct;
   CompressOptions compress;
-  OrbitFramesOptions orbit;         // default 36 frames at 512x512
-  EvaluateOptions evaluate;         // its workspace is set by RunWorkspace
+  OrbitFramesOptions orbit;  // default 36 frames at 512x512
+  EvaluateOptions evaluate;  // its workspace is set by RunWorkspace
   // Guards: stop, writing no asset, when the mattes cover too much or too little of a photo, when
   // they disagree with each other through the cameras, or when the reconstruction does not
   // reproduce them. Off only to inspect what garbage in gives.

@@ -57,7 +57,8 @@ double WidestFootprint(const std::vector<fs::path>& assets) {
   double widest = 0;
   for (const fs::path& path : assets) {
     const VtreeAsset asset = ReadAsset(path);
-    widest = std::max({widest, asset.bounds_max.x() - asset.bounds_min.x(), asset.bounds_max.y() - asset.bounds_min.y()});
+    widest =
+        std::max({widest, asset.bounds_max.x() - asset.bounds_min.x(), asset.bounds_max.y() - asset.bounds_min.y()});
   }
   return widest;
 }
@@ -68,7 +69,8 @@ double Rounded(double value) { return std::round(value * 1000) / 1000; }
 // As the sample scenes are written: one line per asset list, ground and instance.
 std::string SceneText(const nlohmann::ordered_json& assets, const nlohmann::ordered_json& ground,
                       const nlohmann::ordered_json& instances) {
-  std::string text = "{\n  \"assets\": " + assets.dump() + ",\n  \"ground\": " + ground.dump() + ",\n  \"instances\": [\n";
+  std::string text =
+      "{\n  \"assets\": " + assets.dump() + ",\n  \"ground\": " + ground.dump() + ",\n  \"instances\": [\n";
   for (size_t i = 0; i < instances.size(); ++i)
     text += "    " + instances[i].dump() + (i + 1 < instances.size() ? ",\n" : "\n");
   return text + "  ]\n}\n";
@@ -122,7 +124,8 @@ std::vector<ScenePlacement> ReadPositionsCsv(const fs::path& csv) {
       }
       for (const char* needed : {"tree", "x", "y"})
         if (!columns.count(needed))
-          FailAt(file, line_number, "the header has no column '", needed, "' (expected tree, x, y[, rotation][, scale])");
+          FailAt(file, line_number, "the header has no column '", needed,
+                 "' (expected tree, x, y[, rotation][, scale])");
       continue;
     }
     if (fields.size() != columns.size())
@@ -191,13 +194,14 @@ int WriteSceneLayout(const SceneLayoutOptions& options) {
   nlohmann::ordered_json assets = nlohmann::ordered_json::object();
   for (size_t i = 0; i < trees.size(); ++i)
     assets[trees[i]] = fs::absolute(options.assets[i]).lexically_normal().lexically_relative(folder).generic_string();
-  const nlohmann::ordered_json ground = {
-      {"size", {Rounded(max_x - min_x + spacing), Rounded(max_y - min_y + spacing)}},
-      {"centre", {Rounded(0.5 * (min_x + max_x)), Rounded(0.5 * (min_y + max_y))}}};
+  const nlohmann::ordered_json ground = {{"size", {Rounded(max_x - min_x + spacing), Rounded(max_y - min_y + spacing)}},
+                                         {"centre", {Rounded(0.5 * (min_x + max_x)), Rounded(0.5 * (min_y + max_y))}}};
   nlohmann::ordered_json instances = nlohmann::ordered_json::array();
   for (const ScenePlacement& p : placements)
-    instances.push_back(
-        {{"asset", p.tree}, {"position", {Rounded(p.x), Rounded(p.y), 0}}, {"rotation", p.rotation}, {"scale", p.scale}});
+    instances.push_back({{"asset", p.tree},
+                         {"position", {Rounded(p.x), Rounded(p.y), 0}},
+                         {"rotation", p.rotation},
+                         {"scale", p.scale}});
   const std::string text = SceneText(assets, ground, instances);
   ParseScene(text, options.output.string(), folder);  // what we write, the renderer reads
   WriteFileAtomic(options.output, text);

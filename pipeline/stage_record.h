@@ -17,10 +17,10 @@ inline constexpr const char* kRunRecordFolder = ".voltree-run";
 // Inputs and outputs are paths relative to the workspace `dir`; a folder counts with every file
 // under it, a missing input counts as missing (so its appearing changes the fingerprint).
 struct StageRecipe {
-  std::string stage;                 // "reconstruct", "compress", ...
+  std::string stage;  // "reconstruct", "compress", ...
   std::vector<std::string> inputs;
   std::vector<std::string> outputs;
-  std::string options;               // the options that shape the outputs, as canonical text (JSON)
+  std::string options;  // the options that shape the outputs, as canonical text (JSON)
 };
 
 std::string StageFingerprint(const std::filesystem::path& dir, const StageRecipe& recipe);

@@ -91,7 +91,7 @@ struct Objective {
 
   struct Value {
     double total = 0, rgb_sse = 0, alpha_sse = 0;  // the squared errors: the own photo's only
-    double own = 0;                                  // the own photo's share of the total
+    double own = 0;                                // the own photo's share of the total
   };
 
   Value operator()(const std::vector<float>& x, std::vector<float>* gradient = nullptr,
@@ -101,7 +101,8 @@ struct Objective {
     for (size_t i = 0; i < images.size(); ++i) {
       double rgb = 0, alpha = 0;
       Accumulate(images[i], x, &rgb, &alpha, gradient, diagonal);
-      if (i == 0) value.rgb_sse = rgb, value.alpha_sse = alpha, value.own = weights.colour * rgb + weights.alpha * alpha;
+      if (i == 0)
+        value.rgb_sse = rgb, value.alpha_sse = alpha, value.own = weights.colour * rgb + weights.alpha * alpha;
       value.total += images[i].weight * (weights.colour * rgb + weights.alpha * alpha);
     }
     for (size_t i = 0; i < x.size(); ++i) {
@@ -133,8 +134,8 @@ struct Objective {
       }
       std::array<float, 4> residual;
       for (int c = 0; c < 4; ++c) residual[c] = colour[c] - want[c];
-      *rgb_sse += double(residual[0]) * residual[0] + double(residual[1]) * residual[1] +
-                  double(residual[2]) * residual[2];
+      *rgb_sse +=
+          double(residual[0]) * residual[0] + double(residual[1]) * residual[1] + double(residual[2]) * residual[2];
       *alpha_sse += double(residual[3]) * residual[3];
       if (!gradient || begin == end) continue;
       // Front to back: g = dLoss/d(colour after layer i), front = transmittance in front of it.
@@ -229,12 +230,14 @@ struct ViewBillboards {
   std::vector<float> Gather(const std::vector<float>& level_texels) const {
     std::vector<float> x(global.size() * per_billboard * 4);
     for (size_t b = 0; b < global.size(); ++b)
-      std::copy_n(level_texels.data() + global[b] * per_billboard * 4, per_billboard * 4, x.data() + b * per_billboard * 4);
+      std::copy_n(level_texels.data() + global[b] * per_billboard * 4, per_billboard * 4,
+                  x.data() + b * per_billboard * 4);
     return x;
   }
   void Scatter(const std::vector<float>& x, std::vector<float>* level_texels) const {
     for (size_t b = 0; b < global.size(); ++b)
-      std::copy_n(x.data() + b * per_billboard * 4, per_billboard * 4, level_texels->data() + global[b] * per_billboard * 4);
+      std::copy_n(x.data() + b * per_billboard * 4, per_billboard * 4,
+                  level_texels->data() + global[b] * per_billboard * 4);
   }
 };
 
@@ -281,7 +284,7 @@ bool Minimise(const Objective& objective, int iterations, double own_limit, std:
       if (!std::isfinite(next.total)) return false;
       accepted = next.total < value->total && next.own <= own_limit;
     }
-    if (!accepted) break;  // no descent left at any step length: converged
+    if (!accepted) break;            // no descent left at any step length: converged
     step = std::min(1.0, step * 4);  // undo the last halving, and try a longer step next time
     x->swap(trial);
     *value = objective(*x, &gradient, &diagonal);
@@ -319,7 +322,8 @@ JobResult FitOneView(const Volume& volume, int level, int v, const std::vector<V
 void BillboardFitOptions::Check() const {
   if (iterations < 0) FailOption("BillboardFitOptions.iterations", "must be >= 0, got ", iterations);
   if (!(prior >= 0 && std::isfinite(prior))) FailOption("BillboardFitOptions.prior", "must be >= 0, got ", prior);
-  if (!(alpha_weight > 0 && std::isfinite(alpha_weight))) FailOption("BillboardFitOptions.alpha_weight", "must be > 0, got ", alpha_weight);
+  if (!(alpha_weight > 0 && std::isfinite(alpha_weight)))
+    FailOption("BillboardFitOptions.alpha_weight", "must be > 0, got ", alpha_weight);
   if (!(billboard_scale > 0)) FailOption("BillboardFitOptions.billboard_scale", "must be > 0, got ", billboard_scale);
   if (neighbours < 0) FailOption("BillboardFitOptions.neighbours", "must be >= 0, got ", neighbours);
   if (!(neighbour_weight >= 0 && std::isfinite(neighbour_weight)))
@@ -344,11 +348,14 @@ BillboardFitReport FitBillboards(const std::vector<View>& views, const std::vect
   // Finest level first: it is the largest job, so the others fill in around it.
   std::vector<JobResult> results(size_t(n_levels) * n_views);
   std::atomic<size_t> done{0};
-  tbb::parallel_for(size_t(0), results.size(), [&](size_t job) {
-    const int level = n_levels - 1 - int(job / n_views), v = int(job % n_views);
-    results[job] = FitOneView(*volume, level, v, views, photos, options, &texels[level]);
-    if (progress) progress->Step("fit", ++done, results.size());
-  }, tbb::simple_partitioner());
+  tbb::parallel_for(
+      size_t(0), results.size(),
+      [&](size_t job) {
+        const int level = n_levels - 1 - int(job / n_views), v = int(job % n_views);
+        results[job] = FitOneView(*volume, level, v, views, photos, options, &texels[level]);
+        if (progress) progress->Step("fit", ++done, results.size());
+      },
+      tbb::simple_partitioner());
 
   BillboardFitReport report;
   for (int l = 0; l < n_levels; ++l) {
@@ -357,8 +364,10 @@ BillboardFitReport FitBillboards(const std::vector<View>& views, const std::vect
     double pixels = 0, rgb_before = 0, rgb_after = 0, alpha_before = 0, alpha_after = 0;
     for (int v = 0; v < n_views; ++v) {
       const JobResult& r = results[size_t(n_levels - 1 - l) * n_views + v];
-      if (r.diverged) report.warnings.push_back(Str("level ", l, ", view '", views[v].name, "': the fit diverged; "
-                                                    "its unfitted billboards are kept"));
+      if (r.diverged)
+        report.warnings.push_back(Str("level ", l, ", view '", views[v].name,
+                                      "': the fit diverged; "
+                                      "its unfitted billboards are kept"));
       out.scale += r.scale / n_views;
       out.layers += r.layers;
       pixels += double(r.pixels);

@@ -45,8 +45,8 @@ struct BillboardFitOptions {
 // Errors at the input views, at each level's fitting scale, before and after.
 struct BillboardFitLevel {
   int level = 0;
-  double scale = 0;                      // photo pixels per fitted pixel (mean over views)
-  size_t layers = 0;                     // billboard layers over all views' pixels
+  double scale = 0;                                    // photo pixels per fitted pixel (mean over views)
+  size_t layers = 0;                                   // billboard layers over all views' pixels
   double rgb_psnr_before = 0, rgb_psnr_after = 0;      // premultiplied RGB, dB
   double alpha_psnr_before = 0, alpha_psnr_after = 0;  // dB
   double loss_before = 0, loss_after = 0;              // the objective, summed over views

@@ -50,8 +50,9 @@ void SquareBounds(const View& camera, const Eigen::Vector3d& centre, double side
   double min_x = std::numeric_limits<double>::infinity(), min_y = min_x, max_x = -min_x, max_y = -min_x;
   for (int k = 0; k < count; ++k)
     for (int corner = 0; corner < 4; ++corner) {
-      const Eigen::Vector3d p = centre + 0.5 * side * ((corner & 1 ? 1.0 : -1.0) * frames[k].right +
-                                                       (corner & 2 ? 1.0 : -1.0) * frames[k].up);
+      const Eigen::Vector3d p =
+          centre +
+          0.5 * side * ((corner & 1 ? 1.0 : -1.0) * frames[k].right + (corner & 2 ? 1.0 : -1.0) * frames[k].up);
       Eigen::Vector2d pixel;
       if (camera.pose.ToCamera(p).z() <= 0 || !camera.WorldToPixel(p, &pixel)) {
         *x0 = *y0 = 0, *x1 = camera.camera.width, *y1 = camera.camera.height;

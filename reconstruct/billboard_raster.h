@@ -27,9 +27,9 @@ struct ViewBlend {
 
 // One view's billboard seen through one pixel: a bilinear tap.
 struct BillboardTap {
-  uint32_t texel = 0;       // global index (billboard * n * n + row * n + col) of the top-left texel
-  float fx = 0, fy = 0;     // bilinear weights of the right column and of the lower row
-  float weight = 0;         // the view's blend weight (0: this view shows nothing here)
+  uint32_t texel = 0;    // global index (billboard * n * n + row * n + col) of the top-left texel
+  float fx = 0, fy = 0;  // bilinear weights of the right column and of the lower row
+  float weight = 0;      // the view's blend weight (0: this view shows nothing here)
 };
 
 // One cell seen through one pixel.

@@ -13,7 +13,8 @@ bool ProjectBox(const View& view, const Eigen::Vector3d& lo, const Eigen::Vector
   *min_x = *min_y = std::numeric_limits<double>::infinity();
   *max_x = *max_y = -std::numeric_limits<double>::infinity();
   for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(), (corner & 4) ? hi.z() : lo.z());
+    const Eigen::Vector3d p((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
+                            (corner & 4) ? hi.z() : lo.z());
     Eigen::Vector2d pixel;
     if (!view.WorldToPixel(p, &pixel)) return false;
     *min_x = std::min(*min_x, pixel.x());

@@ -21,8 +21,7 @@ int64_t LevelResolution(int branching, int level) {
   return r;
 }
 
-GridFrame RootCube(const Eigen::Vector3d& bounds_min, const Eigen::Vector3d& bounds_max, double margin,
-                   int branching) {
+GridFrame RootCube(const Eigen::Vector3d& bounds_min, const Eigen::Vector3d& bounds_max, double margin, int branching) {
   const Eigen::Vector3d extent = bounds_max - bounds_min;
   if (!extent.allFinite() || extent.minCoeff() < 0 || extent.maxCoeff() <= 0)
     Fail("scene bounds must be finite with bounds_max >= bounds_min and a positive extent");
@@ -54,8 +53,8 @@ std::vector<CellCoord> Children(const std::vector<CellCoord>& cells, int branchi
     for (int z = 0; z < branching; ++z)
       for (int y = 0; y < branching; ++y)
         for (int x = 0; x < branching; ++x)
-          children.push_back({uint16_t(c[0] * branching + x), uint16_t(c[1] * branching + y),
-                              uint16_t(c[2] * branching + z)});
+          children.push_back(
+              {uint16_t(c[0] * branching + x), uint16_t(c[1] * branching + y), uint16_t(c[2] * branching + z)});
   std::sort(children.begin(), children.end(), CellLess);
   return children;
 }

@@ -13,7 +13,7 @@ using CellCoord = std::array<uint16_t, 3>;
 
 struct GridFrame {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // min corner of the root cube
-  double size = 1;                                    // root cube edge
+  double size = 1;                                   // root cube edge
   int branching = 2;
 
   int Resolution(int level) const;  // branching^level
@@ -28,8 +28,7 @@ struct GridFrame {
 
 // The bounding cube of [bounds_min, bounds_max], centred on it, grown by `margin` (a fraction of
 // the largest extent) on every side so that leaves on the boundary do not sit on cell faces.
-GridFrame RootCube(const Eigen::Vector3d& bounds_min, const Eigen::Vector3d& bounds_max, double margin,
-                   int branching);
+GridFrame RootCube(const Eigen::Vector3d& bounds_min, const Eigen::Vector3d& bounds_max, double margin, int branching);
 
 // branching^level, or 0 when it would not fit the 16-bit cell coordinates.
 int64_t LevelResolution(int branching, int level);
@@ -60,7 +59,9 @@ class LevelCells {
   const std::array<int, 3>& box_min() const { return box_min_; }
   const std::array<int, 3>& box_max() const { return box_max_; }
 
-  static size_t DenseBytes(int64_t resolution) { return size_t(resolution) * resolution * resolution * sizeof(int32_t); }
+  static size_t DenseBytes(int64_t resolution) {
+    return size_t(resolution) * resolution * resolution * sizeof(int32_t);
+  }
 
  private:
   int resolution_ = 0;

@@ -8,9 +8,7 @@
 
 namespace voltree {
 
-uint8_t CarveThreshold8(double carve_alpha) {
-  return uint8_t(std::clamp(std::floor(carve_alpha * 255.0), 0.0, 254.0));
-}
+uint8_t CarveThreshold8(double carve_alpha) { return uint8_t(std::clamp(std::floor(carve_alpha * 255.0), 0.0, 254.0)); }
 
 PixelBox CoveredPixels(double min_x, double min_y, double max_x, double max_y) {
   PixelBox box;
@@ -53,7 +51,8 @@ double MatteStats::MeanAlpha(const PixelBox& box) const {
   const PixelBox b = Clip(box);
   if (b.empty()) return -1;
   const size_t s = size_t(width_) + 1;
-  const uint64_t sum = alpha_[b.y1 * s + b.x1] - alpha_[b.y0 * s + b.x1] - alpha_[b.y1 * s + b.x0] + alpha_[b.y0 * s + b.x0];
+  const uint64_t sum =
+      alpha_[b.y1 * s + b.x1] - alpha_[b.y0 * s + b.x1] - alpha_[b.y1 * s + b.x0] + alpha_[b.y0 * s + b.x0];
   return double(sum) / (255.0 * double(b.area()));
 }
 

@@ -24,7 +24,8 @@ std::vector<OpacityLevel> BuildHierarchyFromFinest(const OpacityLevel& finest, i
       const CellCoord& c = child.cells[i];
       parents[i] = {CellCoord{uint16_t(c[0] / branching), uint16_t(c[1] / branching), uint16_t(c[2] / branching)}, i};
     }
-    std::stable_sort(parents.begin(), parents.end(), [](const auto& a, const auto& b) { return CellLess(a.first, b.first); });
+    std::stable_sort(parents.begin(), parents.end(),
+                     [](const auto& a, const auto& b) { return CellLess(a.first, b.first); });
     OpacityLevel& out = levels[level];
     for (size_t i = 0; i < parents.size();) {
       double sum = 0;
@@ -51,7 +52,9 @@ OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& v
     std::vector<CellCoord> kept = CarveCells(frame, level, candidates, views, mattes);
     report.kept = kept.size();
     if (kept.empty()) {
-      if (level == 0) Fail("nothing to reconstruct: the visual hull of the mattes is empty (no view sees the tree inside the bounds)");
+      if (level == 0)
+        Fail(
+            "nothing to reconstruct: the visual hull of the mattes is empty (no view sees the tree inside the bounds)");
       break;
     }
     // Initial sigma: the parent's (candidates and `initial` are parallel; kept is a subsequence).

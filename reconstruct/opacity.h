@@ -44,8 +44,8 @@ struct OpacityLevelReport {
 };
 
 struct OpacityResult {
-  std::vector<OpacityLevel> levels;          // final, consistent with the finest level
-  std::vector<OpacityLevel> solved;          // each level as solved, before the rebuild
+  std::vector<OpacityLevel> levels;  // final, consistent with the finest level
+  std::vector<OpacityLevel> solved;  // each level as solved, before the rebuild
   std::vector<OpacityLevelReport> reports;
 };
 

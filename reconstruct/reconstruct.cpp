@@ -39,9 +39,9 @@ Image8 WhiteForeground(const Image8& matte) {
 void SayFitReport(const BillboardFitReport& report, Progress& progress) {
   for (const BillboardFitLevel& l : report.levels)
     progress.Say("fit", Str("level ", l.level, " (1/", FixedDecimals(l.scale, 1), " scale): alpha PSNR ",
-                            FixedDecimals(l.alpha_psnr_before, 2), " -> ", FixedDecimals(l.alpha_psnr_after, 2), " dB, RGB ",
-                            FixedDecimals(l.rgb_psnr_before, 2), " -> ", FixedDecimals(l.rgb_psnr_after, 2),
-                            " dB at the input views"));
+                            FixedDecimals(l.alpha_psnr_before, 2), " -> ", FixedDecimals(l.alpha_psnr_after, 2),
+                            " dB, RGB ", FixedDecimals(l.rgb_psnr_before, 2), " -> ",
+                            FixedDecimals(l.rgb_psnr_after, 2), " dB at the input views"));
   for (const std::string& warning : report.warnings) progress.Say("fit", "warning: " + warning);
 }
 
@@ -167,7 +167,8 @@ void CheckReconstructInput(const ReconstructInput& input, const ReconstructOptio
   }
   if (widest_pixels < 1)
     Fail(src, ": scene bounds [", input.bounds_min.transpose(), "] .. [", input.bounds_max.transpose(),
-         "] are smaller than one pixel in every view (", widest_pixels, " px at most): there is nothing to "
+         "] are smaller than one pixel in every view (", widest_pixels,
+         " px at most): there is nothing to "
          "reconstruct in them; check scene.json");
   const uint8_t empty_at = CarveThreshold8(options.carve_alpha);
   bool any_alpha = false;
@@ -202,7 +203,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
   requested.Check();
   const ReconstructOptions options = ResolveLevels(input, requested);
   if (requested.auto_levels && progress)
-    progress->Say("reconstruct", Str("--levels auto: ", options.levels, " levels (the finest texel about one photo pixel)"));
+    progress->Say("reconstruct",
+                  Str("--levels auto: ", options.levels, " levels (the finest texel about one photo pixel)"));
   options.Check();
   CheckReconstructInput(input, options);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
@@ -210,9 +212,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
   arena.execute([&] {
     const size_t n_views = input.views.size();
     std::vector<MatteStats> mattes(n_views);
-    tbb::parallel_for(size_t(0), n_views, [&](size_t v) {
-      mattes[v] = MatteStats(input.mattes[v], CarveThreshold8(options.carve_alpha));
-    });
+    tbb::parallel_for(size_t(0), n_views,
+                      [&](size_t v) { mattes[v] = MatteStats(input.mattes[v], CarveThreshold8(options.carve_alpha)); });
     const GridFrame frame = RootCube(input.bounds_min, input.bounds_max, options.margin, options.branching);
 
     const auto solve_start = Clock::now();

@@ -20,13 +20,13 @@
 namespace voltree {
 
 struct ReconstructOptions {
-  int levels = 7;             // level 0 = root ... levels-1 (64^3 cells for 7 levels of an octree)
-  bool auto_levels = false;   // levels from the photos instead (auto_levels.h): a finest texel ~ one pixel
-  int branching = 2;          // 2: octree, 3: tri-grid (Reche 2004)
-  int texels = 4;             // billboards are texels x texels (8 for Reche 2004)
-  double margin = 0.05;       // root cube = bounds' cube grown by this fraction of its edge per side
-  double carve_alpha = 0.02;  // pixels at or below this alpha are empty for carving
-  int threads = 0;            // 0: all cores
+  int levels = 7;                 // level 0 = root ... levels-1 (64^3 cells for 7 levels of an octree)
+  bool auto_levels = false;       // levels from the photos instead (auto_levels.h): a finest texel ~ one pixel
+  int branching = 2;              // 2: octree, 3: tri-grid (Reche 2004)
+  int texels = 4;                 // billboards are texels x texels (8 for Reche 2004)
+  double margin = 0.05;           // root cube = bounds' cube grown by this fraction of its edge per side
+  double carve_alpha = 0.02;      // pixels at or below this alpha are empty for carving
+  int threads = 0;                // 0: all cores
   size_t memory_limit_bytes = 0;  // 0: the memory available now (/proc/meminfo)
   OpacityOptions opacity;         // the tomography: solver, ray sampling, refinement
   BillboardOptions billboards;    // texel colours and pruning; their epsilon is the tomography's
@@ -42,7 +42,7 @@ struct ReconstructInput {
   std::vector<Image8> foreground;  // per view, premultiplied RGBA, the camera's size
   Eigen::Vector3d bounds_min = Eigen::Vector3d::Zero();
   Eigen::Vector3d bounds_max = Eigen::Vector3d::Ones();
-  std::string source = "memory";   // names the inputs in error messages, e.g. the workspace
+  std::string source = "memory";  // names the inputs in error messages, e.g. the workspace
 };
 
 // Estimated peak bytes of a reconstruction, for the memory check.
@@ -57,8 +57,8 @@ void CheckReconstructInput(const ReconstructInput& input, const ReconstructOptio
 // Timings and work counts, for benchmarks.
 struct ReconstructStats {
   double solve_seconds = 0, billboard_seconds = 0;
-  size_t ray_passes = 0;    // sum over levels of rays x solver iterations
-  size_t texel_rays = 0;    // billboard texel rays traced
+  size_t ray_passes = 0;  // sum over levels of rays x solver iterations
+  size_t texel_rays = 0;  // billboard texel rays traced
   std::vector<OpacityLevelReport> levels;
   BillboardFitReport fit;  // empty levels when the fit is off
 };

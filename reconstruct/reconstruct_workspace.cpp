@@ -123,7 +123,8 @@ ReconstructInput LoadReconstructInput(const fs::path& dir, const ReconstructOpti
     }
     input.mattes.push_back(std::move(matte));
     input.foreground.push_back(std::move(foreground));
-    if (progress) progress->Say("reconstruct", Str("read view ", input.mattes.size(), "/", input.views.size(), ": ", view.name));
+    if (progress)
+      progress->Say("reconstruct", Str("read view ", input.mattes.size(), "/", input.views.size(), ": ", view.name));
   }
   if (!any_foreground && progress)
     progress->Say("reconstruct", "no foreground/ images: texel colours come from images/ (background may bleed in)");
@@ -153,8 +154,8 @@ ReconstructInput LoadReconstructInput(const fs::path& dir, const ReconstructOpti
     input.bounds_min = hull.min;
     input.bounds_max = hull.max;
     if (progress)
-      progress->Say("reconstruct", Str("no scene.json: bounds from a coarse visual hull [", hull.min.transpose(), "] .. [",
-                                       hull.max.transpose(), "]"));
+      progress->Say("reconstruct", Str("no scene.json: bounds from a coarse visual hull [", hull.min.transpose(),
+                                       "] .. [", hull.max.transpose(), "]"));
   }
   return input;
 }

@@ -53,8 +53,8 @@ TomographySystem::TomographySystem(const GridFrame& frame, int level, const Leve
   window_ = GridWindow{frame.origin, frame.CellSize(level), cells.box_min(), cells.box_max()};
   rays_.resize(views.size());
   tbb::parallel_for(size_t(0), views.size(), [&](size_t v) {
-    rays_[v] = SampleRays(views[v], mattes[v], BlockSize(views[v], frame, level, options.samples_per_cell),
-                          options.epsilon);
+    rays_[v] =
+        SampleRays(views[v], mattes[v], BlockSize(views[v], frame, level, options.samples_per_cell), options.epsilon);
   });
 
   // Try to store the entries; give up (and stream) as soon as they exceed the budget.
@@ -127,7 +127,8 @@ void TomographySystem::Walk(const Ray& ray, std::vector<uint32_t>* cells, std::v
 
 void TomographyOptions::Check() const {
   if (!(epsilon > 0 && epsilon < 1)) FailOption("TomographyOptions.epsilon", "must be in (0, 1), got ", epsilon);
-  if (!(samples_per_cell > 0)) FailOption("TomographyOptions.samples_per_cell", "must be positive, got ", samples_per_cell);
+  if (!(samples_per_cell > 0))
+    FailOption("TomographyOptions.samples_per_cell", "must be positive, got ", samples_per_cell);
 }
 
 }  // namespace voltree

@@ -17,8 +17,8 @@
 namespace voltree {
 
 struct TomographyOptions {
-  double epsilon = kDefaultAlphaEpsilon;  // of the optical depth (optical_depth.h)
-  double samples_per_cell = 2;     // rays per projected cell edge
+  double epsilon = kDefaultAlphaEpsilon;      // of the optical depth (optical_depth.h)
+  double samples_per_cell = 2;                // rays per projected cell edge
   size_t max_stored_bytes = size_t(1) << 30;  // larger ray systems are streamed
 
   void Check() const;  // throws OptionError naming the field

@@ -11,9 +11,12 @@ namespace {
 
 GLenum InternalFormat(ColorFormat format) {
   switch (format) {
-    case ColorFormat::kRGBA8: return GL_RGBA8;
-    case ColorFormat::kRGBA16F: return GL_RGBA16F;
-    case ColorFormat::kRGBA32F: return GL_RGBA32F;
+    case ColorFormat::kRGBA8:
+      return GL_RGBA8;
+    case ColorFormat::kRGBA16F:
+      return GL_RGBA16F;
+    case ColorFormat::kRGBA32F:
+      return GL_RGBA32F;
   }
   return GL_RGBA8;
 }
@@ -76,7 +79,9 @@ void Framebuffer::Clear(float r, float g, float b, float a, float depth) const {
   if (depth_.id() != 0) glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &depth);
 }
 
-Image8 Framebuffer::ReadImage8() const { return ReadBack<uint8_t>(framebuffer_.id(), width_, height_, GL_UNSIGNED_BYTE); }
+Image8 Framebuffer::ReadImage8() const {
+  return ReadBack<uint8_t>(framebuffer_.id(), width_, height_, GL_UNSIGNED_BYTE);
+}
 
 ImageF Framebuffer::ReadImageF() const { return ReadBack<float>(framebuffer_.id(), width_, height_, GL_FLOAT); }
 

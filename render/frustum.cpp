@@ -14,8 +14,8 @@ Frustum::Frustum(const View& view) : pose_(view.pose) {
   constexpr int kSamples = 16;
   for (int i = 0; i <= kSamples; ++i) {
     const double u = w * i / kSamples, v = h * i / kSamples;
-    for (const Eigen::Vector2d& pixel : {Eigen::Vector2d(u, 0), Eigen::Vector2d(u, h), Eigen::Vector2d(0, v),
-                                        Eigen::Vector2d(w, v)}) {
+    for (const Eigen::Vector2d& pixel :
+         {Eigen::Vector2d(u, 0), Eigen::Vector2d(u, h), Eigen::Vector2d(0, v), Eigen::Vector2d(w, v)}) {
       const Eigen::Vector3d ray = view.camera.Unproject(pixel);  // z = 1
       if (first) left = right = ray.x(), top = bottom = ray.y(), first = false;
       left = std::min(left, ray.x()), right = std::max(right, ray.x());

@@ -17,17 +17,28 @@ constexpr const char* kInstallHint =
 
 std::string EglErrorName(EGLint code) {
   switch (code) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    default: return Str("EGL error 0x", std::hex, code);
+    case EGL_SUCCESS:
+      return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+      return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+      return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+      return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+      return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+      return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+      return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY:
+      return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+      return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+      return "EGL_BAD_PARAMETER";
+    default:
+      return Str("EGL error 0x", std::hex, code);
   }
 }
 
@@ -81,14 +92,22 @@ EGLDisplay OpenDisplay(std::string* platform) {
 }
 
 EGLConfig ChooseConfig(EGLDisplay display) {
-  const EGLint attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,
-                               EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+  const EGLint attributes[] = {EGL_RENDERABLE_TYPE,
+                               EGL_OPENGL_BIT,
+                               EGL_SURFACE_TYPE,
+                               EGL_PBUFFER_BIT,
+                               EGL_RED_SIZE,
+                               8,
+                               EGL_GREEN_SIZE,
+                               8,
+                               EGL_BLUE_SIZE,
+                               8,
+                               EGL_NONE};
   EGLConfig config = nullptr;
   EGLint count = 0;
   if (eglChooseConfig(display, attributes, &config, 1, &count) == EGL_TRUE && count > 0) return config;
   // Rendering only into framebuffer objects needs no surface, hence no config.
-  if (HasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context"))
-    return EGL_NO_CONFIG_KHR;
+  if (HasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) return EGL_NO_CONFIG_KHR;
   Fail("EGL: no OpenGL-capable config on this display (", EglErrorName(eglGetError()), "); ", kInstallHint);
 }
 
@@ -137,8 +156,8 @@ GlContext::GlContext(const GlContextOptions& options) {
     if (context != EGL_NO_CONTEXT) break;
   }
   if (context == EGL_NO_CONTEXT)
-    Fail("EGL: cannot create an OpenGL ", versions.back().first, ".", versions.back().second,
-         " core profile context (", EglErrorName(eglGetError()), "); ", kInstallHint);
+    Fail("EGL: cannot create an OpenGL ", versions.back().first, ".", versions.back().second, " core profile context (",
+         EglErrorName(eglGetError()), "); ", kInstallHint);
   context_ = context;
   MakeCurrent();
   renderer_ = GlString(GL_RENDERER);
@@ -151,8 +170,7 @@ GlContext::~GlContext() {
   // The display is shared by every context of the process (EGL returns the same handle), so it is
   // not terminated here: that would destroy other live contexts.
   if (context_ != nullptr) {
-    if (eglGetCurrentContext() == context_)
-      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (eglGetCurrentContext() == context_) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
   }
 }

@@ -33,15 +33,18 @@ void GlStreamBuffer::Upload(const void* data, size_t bytes) {
 
 GlTexture::GlTexture(const Image8& image, const TextureOptions& options) {
   if (image.empty() || image.channels < 1 || image.channels > 4)
-    Fail("texture upload: expected a non-empty image with 1 to 4 channels, got ", image.width, "x",
-         image.height, "x", image.channels);
+    Fail("texture upload: expected a non-empty image with 1 to 4 channels, got ", image.width, "x", image.height, "x",
+         image.channels);
   // Single-channel textures are replicated to RGB by swizzling, not by copying.
   static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
   const GLenum format = kFormats[image.channels - 1];
   GLenum internal = GL_RGBA8;
-  if (image.channels <= 2) internal = image.channels == 1 ? GL_R8 : GL_RG8;
-  else if (options.srgb) internal = image.channels == 3 ? GL_SRGB8 : GL_SRGB8_ALPHA8;
-  else internal = image.channels == 3 ? GL_RGB8 : GL_RGBA8;
+  if (image.channels <= 2)
+    internal = image.channels == 1 ? GL_R8 : GL_RG8;
+  else if (options.srgb)
+    internal = image.channels == 3 ? GL_SRGB8 : GL_SRGB8_ALPHA8;
+  else
+    internal = image.channels == 3 ? GL_RGB8 : GL_RGBA8;
   const int levels = options.mipmaps ? std::bit_width(static_cast<unsigned>(std::max(image.width, image.height))) : 1;
   name_ = GlTextureName::Create();
   const GLuint texture = name_.id();

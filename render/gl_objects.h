@@ -82,9 +82,9 @@ class GlVertexArray {
 };
 
 struct TextureOptions {
-  bool srgb = true;      // 8-bit colour is sRGB-encoded: sample as linear
+  bool srgb = true;  // 8-bit colour is sRGB-encoded: sample as linear
   bool mipmaps = true;
-  bool repeat = true;    // else clamp to edge
+  bool repeat = true;  // else clamp to edge
 };
 
 class GlTexture {

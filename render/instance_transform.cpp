@@ -18,13 +18,17 @@ Eigen::Matrix3d InstanceTransform::Rotation() const {
   return Eigen::AngleAxisd(rotation_degrees * std::numbers::pi / 180, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-Eigen::Vector3d InstanceTransform::ToWorld(const Eigen::Vector3d& p) const { return translation + scale * (Rotation() * p); }
+Eigen::Vector3d InstanceTransform::ToWorld(const Eigen::Vector3d& p) const {
+  return translation + scale * (Rotation() * p);
+}
 
 Eigen::Vector3d InstanceTransform::ToAsset(const Eigen::Vector3d& p) const {
   return Rotation().transpose() * (p - translation) / scale;
 }
 
 Eigen::Vector3d InstanceTransform::DirectionToWorld(const Eigen::Vector3d& d) const { return Rotation() * d; }
-Eigen::Vector3d InstanceTransform::DirectionToAsset(const Eigen::Vector3d& d) const { return Rotation().transpose() * d; }
+Eigen::Vector3d InstanceTransform::DirectionToAsset(const Eigen::Vector3d& d) const {
+  return Rotation().transpose() * d;
+}
 
 }  // namespace voltree

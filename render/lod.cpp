@@ -16,7 +16,8 @@ const char* LodRuleName(LodRule rule) { return rule == LodRule::kPlanes ? "plane
 
 void LodOptions::Check() const {
   if (rule != LodRule::kScreen && rule != LodRule::kPlanes) Fail("lod: unknown rule ", int(rule));
-  if (forced_level < -1) FailOption("LodOptions.forced_level", "must be >= 0 (or -1 for automatic), got ", forced_level);
+  if (forced_level < -1)
+    FailOption("LodOptions.forced_level", "must be >= 0 (or -1 for automatic), got ", forced_level);
   if (!(max_texel_pixels > 0)) FailOption("LodOptions.max_texel_pixels", "must be > 0, got ", max_texel_pixels);
   if (!(hysteresis >= 0 && hysteresis < 1)) FailOption("LodOptions.hysteresis", "must be in [0, 1), got ", hysteresis);
 }

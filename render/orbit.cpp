@@ -39,7 +39,8 @@ std::vector<View> OrbitCamerasAround(const Eigen::Vector3d& centre, double radiu
                                      double elevation_degrees, double azimuth_degrees, const OrbitOptions& options) {
   options.Check();
   if (!(radius > 0) || !(distance > 0)) Fail("orbit: radius and distance must be > 0, got ", radius, " and ", distance);
-  const double elevation = elevation_degrees * std::numbers::pi / 180, azimuth0 = azimuth_degrees * std::numbers::pi / 180;
+  const double elevation = elevation_degrees * std::numbers::pi / 180,
+               azimuth0 = azimuth_degrees * std::numbers::pi / 180;
   // Half field of view that holds the bounding sphere, with the margin.
   const double half_fov = std::min(std::asin(std::min(radius * options.margin / distance, 0.999)), 1.5);
   const double focal = 0.5 * std::min(options.width, options.height) / std::tan(half_fov);
@@ -53,7 +54,8 @@ std::vector<View> OrbitCamerasAround(const Eigen::Vector3d& centre, double radiu
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%03d.png", i);
     view.name = name;
-    view.camera = Camera::Pinhole(options.width, options.height, focal, focal, 0.5 * options.width, 0.5 * options.height);
+    view.camera =
+        Camera::Pinhole(options.width, options.height, focal, focal, 0.5 * options.width, 0.5 * options.height);
     view.pose = Pose::LookAt(eye, centre, Eigen::Vector3d::UnitZ());
     views.push_back(view);
   }

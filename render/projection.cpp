@@ -52,10 +52,17 @@ void SetProjectionUniforms(const ShaderProgram& program, const View& view, const
   const std::vector<double>& p = intrinsics.params;
   switch (intrinsics.model) {
     case CameraModel::kSimplePinhole:
-    case CameraModel::kPinhole: break;
-    case CameraModel::kSimpleRadial: distortion[0] = float(p[3]); break;
-    case CameraModel::kRadial: distortion << float(p[3]), float(p[4]), 0, 0; break;
-    case CameraModel::kOpenCV: distortion << float(p[4]), float(p[5]), float(p[6]), float(p[7]); break;
+    case CameraModel::kPinhole:
+      break;
+    case CameraModel::kSimpleRadial:
+      distortion[0] = float(p[3]);
+      break;
+    case CameraModel::kRadial:
+      distortion << float(p[3]), float(p[4]), 0, 0;
+      break;
+    case CameraModel::kOpenCV:
+      distortion << float(p[4]), float(p[5]), float(p[6]), float(p[7]);
+      break;
   }
   program.Set("uWorldToCamera", Eigen::Matrix3f(view.pose.rotation.toRotationMatrix().cast<float>()));
   program.Set("uTranslation", Eigen::Vector3f(view.pose.translation.cast<float>()));

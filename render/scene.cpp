@@ -103,7 +103,8 @@ SceneGround ParseGround(const Checker& check, const Json& j) {
   return ground;
 }
 
-SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index, const std::vector<SceneAssetRef>& assets) {
+SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index,
+                            const std::vector<SceneAssetRef>& assets) {
   const std::string field = Str("instances[", index, "]");
   check.Object(j, field);
   check.KnownKeys(j, field, {"asset", "position", "rotation", "scale"});
@@ -138,7 +139,8 @@ SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index, c
 
 bool IsSceneFile(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return extension == ".json";
 }
 
@@ -158,7 +160,8 @@ Scene ParseScene(std::string_view text, const std::string& name, const std::file
   if (j.contains("ground")) scene.ground = ParseGround(check, j["ground"]);
   const Json& instances = check.Required(j, "instances", "");
   if (!instances.is_array()) check.Wrong("instances", "must be an array, got ", instances.type_name());
-  for (size_t i = 0; i < instances.size(); ++i) scene.instances.push_back(ParseInstance(check, instances[i], i, scene.assets));
+  for (size_t i = 0; i < instances.size(); ++i)
+    scene.instances.push_back(ParseInstance(check, instances[i], i, scene.assets));
   return scene;
 }
 
@@ -168,7 +171,8 @@ Scene LoadScene(const std::filesystem::path& file, const SceneLoadOptions& optio
   Scene scene = ParseScene(ReadFile(file), file.string(), folder);
   std::vector<std::string> missing;
   for (const SceneAssetRef& asset : scene.assets)
-    if (!std::filesystem::is_regular_file(asset.path)) missing.push_back(Str("assets.", asset.name, " (", asset.path.string(), ")"));
+    if (!std::filesystem::is_regular_file(asset.path))
+      missing.push_back(Str("assets.", asset.name, " (", asset.path.string(), ")"));
   if (!missing.empty()) {
     std::string list;
     for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;

@@ -44,8 +44,10 @@ void Accumulate(const FrameStats& tree, FrameStats* total) {
   if (tree.min_level >= 0)
     total->min_level = total->min_level < 0 ? tree.min_level : std::min(total->min_level, tree.min_level);
   total->max_level = std::max(total->max_level, tree.max_level);
-  if (total->cells_per_level.size() < tree.cells_per_level.size()) total->cells_per_level.resize(tree.cells_per_level.size(), 0);
-  for (size_t level = 0; level < tree.cells_per_level.size(); ++level) total->cells_per_level[level] += tree.cells_per_level[level];
+  if (total->cells_per_level.size() < tree.cells_per_level.size())
+    total->cells_per_level.resize(tree.cells_per_level.size(), 0);
+  for (size_t level = 0; level < tree.cells_per_level.size(); ++level)
+    total->cells_per_level[level] += tree.cells_per_level[level];
 }
 
 }  // namespace
@@ -115,8 +117,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, const std::vector<VtreeAsset>& 
     instance.transform.Check();
   }
   lod_states_.resize(scene.instances.size());
-  ground_program_ = ShaderProgram::Graphics("scene ground", std::string("#version 430 core\n") + kProjectionGlsl + kGroundMain,
-                                            kGroundFragment);
+  ground_program_ = ShaderProgram::Graphics(
+      "scene ground", std::string("#version 430 core\n") + kProjectionGlsl + kGroundMain, kGroundFragment);
   CheckGl("render: creating the scene's ground");
 }
 
@@ -166,8 +168,8 @@ void SceneRenderer::DrawGround(const View& view, const DepthRange& depth) const 
   ground_program_.Set("uGroundMin", Eigen::Vector2f((ground.centre - 0.5 * ground.size).cast<float>()));
   ground_program_.Set("uGroundSize", Eigen::Vector2f(ground.size.cast<float>()));
   ground_program_.Set("uCells", kGroundCells);
-  ground_program_.Set("uColour", Eigen::Vector3f(ground.colour[0] / 255.0f, ground.colour[1] / 255.0f,
-                                                 ground.colour[2] / 255.0f));
+  ground_program_.Set("uColour",
+                      Eigen::Vector3f(ground.colour[0] / 255.0f, ground.colour[1] / 255.0f, ground.colour[2] / 255.0f));
   ground_program_.Use();
   ground_vertex_array_.Bind();
   glEnable(GL_DEPTH_TEST);

@@ -27,21 +27,29 @@ std::vector<std::string> SplitLines(std::string_view text) {
 
 std::string InfoLog(GLuint object, bool is_program) {
   GLint length = 0;
-  if (is_program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  if (is_program)
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
-  if (is_program) glGetProgramInfoLog(object, length, nullptr, log.data());
-  else glGetShaderInfoLog(object, length, nullptr, log.data());
+  if (is_program)
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  else
+    glGetShaderInfoLog(object, length, nullptr, log.data());
   while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
   return log;
 }
 
 const char* StageName(GLenum stage) {
   switch (stage) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+      return "vertex";
+    case GL_FRAGMENT_SHADER:
+      return "fragment";
+    case GL_COMPUTE_SHADER:
+      return "compute";
+    default:
+      return "shader";
   }
 }
 
@@ -88,16 +96,19 @@ std::string QuoteShaderLines(std::string_view source, std::string_view log) {
   static const std::regex kLineReference(R"((?:^|\n)\s*\d+[:(](\d+)[(): ])");
   std::set<int> wanted;
   const std::string log_text(log);
-  for (auto it = std::sregex_iterator(log_text.begin(), log_text.end(), kLineReference);
-       it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(log_text.begin(), log_text.end(), kLineReference); it != std::sregex_iterator();
+       ++it)
     wanted.insert(std::stoi((*it)[1].str()));
   const std::vector<std::string> lines = SplitLines(source);
   std::string quote;
   for (int line : wanted) {
     if (line < 1 || line > static_cast<int>(lines.size())) continue;
     for (int context = std::max(1, line - 1); context <= std::min<int>(lines.size(), line + 1); ++context)
-      quote += Str(context == line ? ">" : " ", context < 10 ? "   " : context < 100 ? "  " : " ", context,
-                   " | ", lines[context - 1], "\n");
+      quote += Str(context == line ? ">" : " ",
+                   context < 10    ? "   "
+                   : context < 100 ? "  "
+                                   : " ",
+                   context, " | ", lines[context - 1], "\n");
   }
   return quote;
 }
@@ -138,9 +149,7 @@ void ShaderProgram::Use() const { glUseProgram(program_); }
 GLint ShaderProgram::Location(const char* name) const { return glGetUniformLocation(program_, name); }
 
 void ShaderProgram::Set(const char* name, int value) const { glProgramUniform1i(program_, Location(name), value); }
-void ShaderProgram::Set(const char* name, float value) const {
-  glProgramUniform1f(program_, Location(name), value);
-}
+void ShaderProgram::Set(const char* name, float value) const { glProgramUniform1f(program_, Location(name), value); }
 void ShaderProgram::Set(const char* name, const Eigen::Vector2f& v) const {
   glProgramUniform2f(program_, Location(name), v.x(), v.y());
 }

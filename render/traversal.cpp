@@ -31,7 +31,8 @@ OctreeIndex::OctreeIndex(const VtreeAsset& asset) : branching_(asset.branching) 
     for (size_t i = 0; i < level.cells.size(); ++i) {
       const auto& c = level.cells[i];
       level_of_[first_cell_[l] + i] = l;
-      centre_[first_cell_[l] + i] = asset.origin + size * (Eigen::Vector3d(c[0], c[1], c[2]) + Eigen::Vector3d::Constant(0.5));
+      centre_[first_cell_[l] + i] =
+          asset.origin + size * (Eigen::Vector3d(c[0], c[1], c[2]) + Eigen::Vector3d::Constant(0.5));
     }
   }
   // Children: counting sort of each level's cells by parent (stable: storage order kept).
@@ -47,7 +48,8 @@ OctreeIndex::OctreeIndex(const VtreeAsset& asset) : branching_(asset.branching) 
       const auto& c = level.cells[i];
       const auto it = above.find(Key(c[0] / branching_, c[1] / branching_, c[2] / branching_));
       if (it == above.end())
-        Fail("render: level ", l, " cell ", i, " (", c[0], ",", c[1], ",", c[2], ") has no parent cell in level ", l - 1);
+        Fail("render: level ", l, " cell ", i, " (", c[0], ",", c[1], ",", c[2], ") has no parent cell in level ",
+             l - 1);
       parent[first_cell_[l] + i] = it->second;
     }
   }
@@ -117,10 +119,9 @@ struct Traverser {
     const double size = index.CellSize(level);
     const bool has_children = index.ChildrenBegin(cell) != index.ChildrenEnd(cell);
     const int previous = refined ? (*refined)[cell] : -1;
-    const bool descend =
-        has_children && ShouldDescend(lod, level, index.levels() - 1, size, texels,
-                                      LodDistance(lod.rule, camera, index.Center(cell)), 0.5 * std::sqrt(3.0) * size,
-                                      camera.focal_pixels, previous);
+    const bool descend = has_children && ShouldDescend(lod, level, index.levels() - 1, size, texels,
+                                                       LodDistance(lod.rule, camera, index.Center(cell)),
+                                                       0.5 * std::sqrt(3.0) * size, camera.focal_pixels, previous);
     if (refined) {
       if (previous == 1 && !descend) ForgetSubtree(cell);  // stale history would bias a later refine
       (*refined)[cell] = descend;

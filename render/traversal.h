@@ -56,8 +56,8 @@ class OctreeIndex {
 
 struct TraversalCamera {
   Eigen::Vector3d eye = Eigen::Vector3d::Zero();
-  double focal_pixels = 500;                              // for the LOD rules
-  Eigen::Vector3d direction = Eigen::Vector3d::Zero();    // unit view direction; needed by LodRule::kPlanes
+  double focal_pixels = 500;                            // for the LOD rules
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // unit view direction; needed by LodRule::kPlanes
 };
 
 // The distance the LOD rule measures a cell centre at (see lod.h).

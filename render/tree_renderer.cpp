@@ -190,7 +190,8 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
   // The asset's frame: view selection, traversal order and LOD are all computed there.
   const Eigen::Vector3d eye = model.ToAsset(camera.pose.Center());
   stats.views = SelectViews(views_, centre_, eye);
-  if (options.nearest_view_only) stats.views.second = stats.views.first, stats.views.first_weight = 1, stats.views.second_weight = 0;
+  if (options.nearest_view_only)
+    stats.views.second = stats.views.first, stats.views.first_weight = 1, stats.views.second_weight = 0;
   const TraversalCamera traversal_camera{eye, 0.5 * (camera.camera.FocalX() + camera.camera.FocalY()),
                                          model.DirectionToAsset(camera.pose.ViewDirection())};
   std::vector<uint32_t> cells;
@@ -228,9 +229,9 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
 
     const Eigen::Vector3d eye = camera.pose.Center();
     const Eigen::Vector3d world_centre = draw.model.ToWorld(centre_);
-    const DepthRange depth = draw.depth ? *draw.depth
-                                        : DepthRangeForSphere(eye, world_centre,
-                                                              draw.model.scale * BoundingRadius(options.billboard_scale));
+    const DepthRange depth =
+        draw.depth ? *draw.depth
+                   : DepthRangeForSphere(eye, world_centre, draw.model.scale * BoundingRadius(options.billboard_scale));
     SetProjectionUniforms(program_, camera, depth);
     const Eigen::Matrix3d rotation = camera.pose.rotation.toRotationMatrix();
     program_.Set("uCameraRight", Eigen::Vector3f(rotation.row(0).transpose().cast<float>()));
@@ -244,7 +245,8 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     // The input views' billboard frames, turned with the instance (scale does not change a direction).
     BillboardFrame a = FrameOf(views_[stats.views.first]), b = FrameOf(views_[stats.views.second]);
     const Eigen::Matrix3f turn = draw.model.Rotation().cast<float>();
-    for (BillboardFrame* f : {&a, &b}) f->direction = turn * f->direction, f->right = turn * f->right, f->up = turn * f->up;
+    for (BillboardFrame* f : {&a, &b})
+      f->direction = turn * f->direction, f->right = turn * f->right, f->up = turn * f->up;
     SetVec3Array(program_, "uDirection", a.direction, b.direction);
     SetVec3Array(program_, "uRight", a.right, b.right);
     SetVec3Array(program_, "uUp", a.up, b.up);

@@ -51,9 +51,9 @@ struct TreeRenderOptions {
   LodOptions lod;
   std::array<float, 4> background = {0, 0, 0, 0};  // straight RGBA in [0, 1]; transparent by default
   double billboard_scale = 1.0;                    // billboard side / cell edge, as reconstruct used
-  bool lod_history = true;  // LOD hysteresis from the previous frames' choices (frames then depend
-                            // on the sequence rendered before them, deterministically)
-  bool tint_levels = false;  // colour each billboard by its octree level (LOD figures)
+  bool lod_history = true;         // LOD hysteresis from the previous frames' choices (frames then depend
+                                   // on the sequence rendered before them, deterministically)
+  bool tint_levels = false;        // colour each billboard by its octree level (LOD figures)
   bool nearest_view_only = false;  // draw only the nearest input view's billboards (to see what the blend adds)
   void Check() const;
 };

@@ -20,12 +20,17 @@ namespace voltree {
 
 void RenderJobOptions::Check() const {
   render.Check();
-  if ((orbit > 0) == !cameras.empty()) FailOption("RenderJobOptions.orbit", "N and --cameras MODEL_DIR: give exactly one of them");
+  if ((orbit > 0) == !cameras.empty())
+    FailOption("RenderJobOptions.orbit", "N and --cameras MODEL_DIR: give exactly one of them");
   if (orbit < 0) FailOption("RenderJobOptions.orbit", "must be >= 1, got ", orbit);
-  if (width < 0 || height < 0 || (width == 0) != (height == 0)) FailOption("RenderJobOptions.width", "must be positive in width and height, got ", width, "x", height);
-  if (output.empty() && turntable.empty()) Fail("render: an output folder (-o DIR) or --turntable FILE.mp4 is required");
-  if (!turntable.empty() && orbit == 0) FailOption("RenderJobOptions.turntable", "encodes orbit frames; it cannot be used with --cameras");
-  if (!asset_folder.empty() && !IsSceneFile(asset)) FailOption("RenderJobOptions.asset_folder", "applies to a scene (.json), not to ", asset.string());
+  if (width < 0 || height < 0 || (width == 0) != (height == 0))
+    FailOption("RenderJobOptions.width", "must be positive in width and height, got ", width, "x", height);
+  if (output.empty() && turntable.empty())
+    Fail("render: an output folder (-o DIR) or --turntable FILE.mp4 is required");
+  if (!turntable.empty() && orbit == 0)
+    FailOption("RenderJobOptions.turntable", "encodes orbit frames; it cannot be used with --cameras");
+  if (!asset_folder.empty() && !IsSceneFile(asset))
+    FailOption("RenderJobOptions.asset_folder", "applies to a scene (.json), not to ", asset.string());
 }
 
 Camera ResizeCamera(const Camera& camera, int width, int height) {
@@ -163,7 +168,9 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
     result.frames.push_back(cameras[i].name);
     result.stats.push_back(stats);
     drawn += double(frame.instances_drawn), culled += double(frame.instances_culled);
-    nlohmann::json record = {{"file", cameras[i].name}, {"cells", stats.cells}, {"billboards", stats.billboards},
+    nlohmann::json record = {{"file", cameras[i].name},
+                             {"cells", stats.cells},
+                             {"billboards", stats.billboards},
                              {"levels", {stats.min_level, stats.max_level}}};
     if (scene) {
       record["instances_drawn"] = frame.instances_drawn;
@@ -187,9 +194,12 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   if (video) video->Finish();
   if (staged) {
     // Timings vary run to run, so they stay out of the folder: its files are deterministic.
-    WriteFileAtomic(staged->path() / "frames.json",
-                    nlohmann::json{{"asset", options.asset_label.empty() ? options.asset.string() : options.asset_label},
-                                   {"frames", frames}}.dump(2) + "\n");
+    WriteFileAtomic(
+        staged->path() / "frames.json",
+        nlohmann::json{{"asset", options.asset_label.empty() ? options.asset.string() : options.asset_label},
+                       {"frames", frames}}
+                .dump(2) +
+            "\n");
     staged->Commit();
   }
   return result;

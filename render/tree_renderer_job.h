@@ -15,27 +15,27 @@
 namespace voltree {
 
 struct RenderJobOptions {
-  std::filesystem::path asset;       // a .vtree, or a scene .json
-  std::string asset_label;           // how frames.json names the asset (default: its path)
+  std::filesystem::path asset;         // a .vtree, or a scene .json
+  std::string asset_label;             // how frames.json names the asset (default: its path)
   std::filesystem::path asset_folder;  // scenes: where their assets are looked up (default: the scene's folder)
-  int orbit = 0;                     // > 0: that many orbit frames
-  std::filesystem::path cameras;     // else: a COLMAP text model; frames named after its images
-  int width = 0, height = 0;         // 0: from the cameras (orbit: 512x512)
+  int orbit = 0;                       // > 0: that many orbit frames
+  std::filesystem::path cameras;       // else: a COLMAP text model; frames named after its images
+  int width = 0, height = 0;           // 0: from the cameras (orbit: 512x512)
   TreeRenderOptions render;
-  std::filesystem::path output;      // frames folder; optional when `turntable` is given
-  std::filesystem::path turntable;   // .mp4 of the orbit frames (30 fps, over the background or grey)
+  std::filesystem::path output;     // frames folder; optional when `turntable` is given
+  std::filesystem::path turntable;  // .mp4 of the orbit frames (30 fps, over the background or grey)
   bool force = false;
   void Check() const;
 };
 
 struct RenderJobResult {
-  std::vector<std::string> frames;         // file names inside the output folder
-  std::vector<FrameStats> stats;           // per frame (a scene's: summed over its instances)
+  std::vector<std::string> frames;  // file names inside the output folder
+  std::vector<FrameStats> stats;    // per frame (a scene's: summed over its instances)
   double mean_instances_drawn = 1, mean_instances_culled = 0;
-  GpuMemory gpu;                           // buffers and atlases of all assets
-  double median_ms = 0;                    // of FrameStats::frame_ms
+  GpuMemory gpu;         // buffers and atlases of all assets
+  double median_ms = 0;  // of FrameStats::frame_ms
   double mean_billboards = 0;
-  std::string renderer;                    // GL_RENDERER
+  std::string renderer;  // GL_RENDERER
 };
 
 // A camera's intrinsics scaled to a new image size (focal lengths and principal point).

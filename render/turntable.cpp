@@ -42,7 +42,8 @@ VideoWriter::VideoWriter(std::filesystem::path output, int width, int height, co
   options.Check();
   if (width < 1 || height < 1) Fail("video: bad frame size ", width, "x", height);
   const std::optional<std::filesystem::path> ffmpeg = FindOnPath("ffmpeg");
-  if (!ffmpeg) Fail(output_.string(), ": writing a video needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg)");
+  if (!ffmpeg)
+    Fail(output_.string(), ": writing a video needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg)");
   CheckCanWrite(output_, options.force);
   temporary_ = output_.parent_path() / Str(".", output_.filename().string(), ".partial-", ::getpid());
   // A socket rather than a pipe: send(MSG_NOSIGNAL) reports a dead ffmpeg as an error instead of
@@ -50,8 +51,8 @@ VideoWriter::VideoWriter(std::filesystem::path output, int width, int height, co
   int sockets[2];
   if (::socketpair(AF_UNIX, SOCK_STREAM, 0, sockets) != 0) Fail("video: socketpair failed: ", std::strerror(errno));
   const std::string size = Str(width, "x", height), fps = std::to_string(options.fps);
-  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
-                                   "-pix_fmt", "rgb24", "-s", size, "-r", fps, "-i", "-",
+  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt",
+                                   "rgb24", "-s", size, "-r", fps, "-i", "-",
                                    // yuv420p needs even sizes
                                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
                                    "-r", fps, "-movflags", "+faststart", "-f", "mp4", temporary_.string()};
@@ -87,8 +88,7 @@ void VideoWriter::Stop() {
   if (socket_ >= 0) ::close(socket_), socket_ = -1;
   if (pid_ > 0) {
     int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}
     status_ = status;
     pid_ = -1;
   }
@@ -111,8 +111,8 @@ void VideoWriter::AddFrame(const Image8& frame) {
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       Stop();
-      Fail(output_.string(), ": ffmpeg stopped reading frames (exit status ", WIFEXITED(status_) ? WEXITSTATUS(status_) : -1,
-           "; its messages are above)");
+      Fail(output_.string(), ": ffmpeg stopped reading frames (exit status ",
+           WIFEXITED(status_) ? WEXITSTATUS(status_) : -1, "; its messages are above)");
     }
     sent += size_t(n);
   }
@@ -123,7 +123,8 @@ void VideoWriter::Finish() {
   if (!WIFEXITED(status_) || WEXITSTATUS(status_) != 0)
     Fail(output_.string(), ": ffmpeg failed (exit status ", WIFEXITED(status_) ? WEXITSTATUS(status_) : -1,
          "; its messages are above)");
-  if (!options_.force && std::filesystem::exists(output_)) Fail(output_.string(), " appeared meanwhile; pass --force to replace it");
+  if (!options_.force && std::filesystem::exists(output_))
+    Fail(output_.string(), " appeared meanwhile; pass --force to replace it");
   std::filesystem::rename(temporary_, output_);
   finished_ = true;
 }

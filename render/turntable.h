@@ -16,7 +16,7 @@ std::optional<std::filesystem::path> FindOnPath(const std::string& name);
 struct VideoOptions {
   int fps = 30;
   std::array<float, 3> background = {0.5f, 0.5f, 0.5f};  // straight-alpha frames are composited over it
-  bool force = false;                                     // replace an existing file
+  bool force = false;                                    // replace an existing file
   void Check() const;
 };
 

@@ -10,7 +10,7 @@
 namespace voltree {
 
 struct ViewPair {
-  int first = 0, second = 0;  // view indices; equal when the asset has one view
+  int first = 0, second = 0;                  // view indices; equal when the asset has one view
   float first_weight = 1, second_weight = 0;  // sum to 1; the nearer view weighs more
 };
 

@@ -7,9 +7,10 @@ namespace voltree {
 
 Eigen::Matrix3f UpToZRotation(UpAxis up) {
   Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();
-  if (up == UpAxis::kY) rotation << 1, 0, 0,  //
-                                    0, 0, -1,  //
-                                    0, 1, 0;   // +90 degrees about X
+  if (up == UpAxis::kY)
+    rotation << 1, 0, 0,  //
+        0, 0, -1,         //
+        0, 1, 0;          // +90 degrees about X
   return rotation;
 }
 

@@ -12,8 +12,8 @@ std::vector<Eigen::Vector3f> AreaWeightedNormals(const std::vector<MeshVertex>& 
   for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
     const uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
     // The cross product's length is twice the area: larger faces weigh more.
-    const Eigen::Vector3f face = (vertices[b].position - vertices[a].position)
-                                     .cross(vertices[c].position - vertices[a].position);
+    const Eigen::Vector3f face =
+        (vertices[b].position - vertices[a].position).cross(vertices[c].position - vertices[a].position);
     sums[a] += face;
     sums[b] += face;
     sums[c] += face;

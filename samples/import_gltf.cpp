@@ -70,7 +70,8 @@ tinygltf::Model LoadModel(const fs::path& path, bool binary, std::vector<std::st
     // Compressed geometry has accessors without buffer views; read as zeros it would silently
     // collapse the tree, so refuse it with the way out.
     if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression")
-      Fail(path.string(), ": requires ", extension, ", which is not supported; re-export without mesh "
+      Fail(path.string(), ": requires ", extension,
+           ", which is not supported; re-export without mesh "
            "compression (e.g. gltf-transform copy, or Blender with compression off)");
     if (extension != "KHR_mesh_quantization" && extension != "KHR_texture_transform" &&
         extension.rfind("KHR_materials_", 0) != 0)
@@ -116,8 +117,8 @@ class AccessorReader {
     const size_t element = size_t(components_) * component_size_;
     if (count_ > 0 && (accessor.byteOffset > view.size() || count_ > view.size() ||
                        (count_ - 1) * stride_ + element > view.size() - accessor.byteOffset))
-      Fail(where, ": accessor ", index, " (", count_, " elements from byte ", accessor.byteOffset,
-           ", stride ", stride_, ") runs past the end of its buffer view (", view.size(), " bytes)");
+      Fail(where, ": accessor ", index, " (", count_, " elements from byte ", accessor.byteOffset, ", stride ", stride_,
+           ") runs past the end of its buffer view (", view.size(), " bytes)");
     data_ = view.data() + accessor.byteOffset;
   }
 
@@ -134,13 +135,20 @@ class AccessorReader {
     if (data_ == nullptr) return 0.0f;
     const uint8_t* p = data_ + i * stride_ + size_t(c) * component_size_;
     switch (component_type_) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return Load<float>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return Scaled(Load<uint8_t>(p), 255.0f);
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(Scaled(Load<int8_t>(p), 127.0f), -1.0f);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return Scaled(Load<uint16_t>(p), 65535.0f);
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(Scaled(Load<int16_t>(p), 32767.0f), -1.0f);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return float(Load<uint32_t>(p));
-      default: return float(Load<double>(p));
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return Load<float>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return Scaled(Load<uint8_t>(p), 255.0f);
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return std::max(Scaled(Load<int8_t>(p), 127.0f), -1.0f);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return Scaled(Load<uint16_t>(p), 65535.0f);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return std::max(Scaled(Load<int16_t>(p), 32767.0f), -1.0f);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return float(Load<uint32_t>(p));
+      default:
+        return float(Load<double>(p));
     }
   }
 
@@ -148,10 +156,14 @@ class AccessorReader {
     if (data_ == nullptr) return 0;
     const uint8_t* p = data_ + i * stride_;
     switch (component_type_) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return Load<uint8_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return Load<uint16_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return Load<uint32_t>(p);
-      default: Fail(where_, ": indices must be unsigned byte, short or int (component type ", component_type_, ")");
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return Load<uint8_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return Load<uint16_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return Load<uint32_t>(p);
+      default:
+        Fail(where_, ": indices must be unsigned byte, short or int (component type ", component_type_, ")");
     }
   }
 
@@ -177,8 +189,8 @@ Eigen::Matrix4d LocalTransform(const tinygltf::Node& node) {
   if (node.translation.size() == 3)
     transform.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
   if (node.rotation.size() == 4)  // glTF stores x, y, z, w
-    transform.rotate(Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])
-                         .normalized());
+    transform.rotate(
+        Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]).normalized());
   if (node.scale.size() == 3) transform.scale(Eigen::Vector3d(node.scale[0], node.scale[1], node.scale[2]));
   return transform.matrix();
 }
@@ -216,8 +228,8 @@ class GltfImporter {
   std::vector<std::pair<int, Eigen::Matrix4d>> RootNodes() const {
     std::vector<std::pair<int, Eigen::Matrix4d>> roots;
     if (!model_.scenes.empty()) {
-      const int scene = model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size()
-                            ? model_.defaultScene : 0;
+      const int scene =
+          model_.defaultScene >= 0 && size_t(model_.defaultScene) < model_.scenes.size() ? model_.defaultScene : 0;
       for (int node : model_.scenes[scene].nodes) roots.emplace_back(node, Eigen::Matrix4d::Identity());
       return roots;
     }
@@ -242,14 +254,16 @@ class GltfImporter {
       if (index < 0 || size_t(index) >= model_.nodes.size())
         Fail(file_, ": node ", index, " does not exist (", model_.nodes.size(), " in the file)");
       if (visited_[index]) {
-        warnings_->push_back(Str(file_, ": node ", index, " is reached twice (the node hierarchy must be a tree); skipped"));
+        warnings_->push_back(
+            Str(file_, ": node ", index, " is reached twice (the node hierarchy must be a tree); skipped"));
         continue;
       }
       visited_[index] = true;
       const tinygltf::Node& node = model_.nodes[index];
       const Eigen::Matrix4d world = parent * LocalTransform(node);
       if (node.mesh >= 0) AppendMesh(node.mesh, world);
-      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.emplace_back(*child, world);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+        stack.emplace_back(*child, world);
     }
   }
 
@@ -302,11 +316,12 @@ class GltfImporter {
       const Eigen::Vector4d p(positions.Float(v, 0), positions.Float(v, 1), positions.Float(v, 2), 1.0);
       vertices[v].position = (world * p).head<3>().cast<float>();
     }
-    const bool has_normals = ReadAttribute(primitive, "NORMAL", 3, vertex_count, where, [&](size_t v, const Eigen::Vector4f& n) {
-      const Eigen::Vector3d turned = normal_matrix * n.head<3>().cast<double>();
-      const double length = turned.norm();
-      vertices[v].normal = length > 0 ? Eigen::Vector3f((turned / length).cast<float>()) : Eigen::Vector3f::UnitZ();
-    });
+    const bool has_normals =
+        ReadAttribute(primitive, "NORMAL", 3, vertex_count, where, [&](size_t v, const Eigen::Vector4f& n) {
+          const Eigen::Vector3d turned = normal_matrix * n.head<3>().cast<double>();
+          const double length = turned.norm();
+          vertices[v].normal = length > 0 ? Eigen::Vector3f((turned / length).cast<float>()) : Eigen::Vector3f::UnitZ();
+        });
     ReadAttribute(primitive, Str("TEXCOORD_", uv_set_[material]), 2, vertex_count, where,
                   [&](size_t v, const Eigen::Vector4f& uv) { vertices[v].uv = uv.head<2>(); });
     ReadAttribute(primitive, "COLOR_0", 0, vertex_count, where,
@@ -328,8 +343,8 @@ class GltfImporter {
   // Calls `set(v, value)` for every vertex when the attribute exists; `components` 0 accepts
   // 3 or 4 (colours). Returns whether it existed.
   template <typename Setter>
-  bool ReadAttribute(const tinygltf::Primitive& primitive, const std::string& name, int components,
-                     size_t vertex_count, const std::string& where, Setter set) {
+  bool ReadAttribute(const tinygltf::Primitive& primitive, const std::string& name, int components, size_t vertex_count,
+                     const std::string& where, Setter set) {
     const auto found = primitive.attributes.find(name);
     if (found == primitive.attributes.end()) return false;
     const AccessorReader reader(model_, found->second, where + " " + name);
@@ -434,7 +449,7 @@ class GltfImporter {
   TreeMesh mesh_;
   std::map<int, int> material_of_gltf_, texture_of_image_, group_of_material_;
   std::vector<bool> visited_;  // per glTF node
-  std::vector<int> uv_set_;  // per our material: the TEXCOORD set its texture reads
+  std::vector<int> uv_set_;    // per our material: the TEXCOORD set its texture reads
 };
 
 }  // namespace

@@ -62,7 +62,8 @@ class ObjImporter {
       if (corners == 3) {
         const int material_id = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
         std::vector<uint32_t>& group = GroupFor(MaterialFor(material_id));
-        for (size_t k = 0; k < 3; ++k) group.push_back(VertexFor(shape.mesh.indices[offset + k], shape.name, needs_normal));
+        for (size_t k = 0; k < 3; ++k)
+          group.push_back(VertexFor(shape.mesh.indices[offset + k], shape.name, needs_normal));
       }
       offset += corners;
     }
@@ -99,7 +100,8 @@ class ObjImporter {
   void FillMissingNormals(const std::vector<bool>& needs_normal) {
     if (std::find(needs_normal.begin(), needs_normal.end(), true) == needs_normal.end()) return;
     std::vector<uint32_t> triangles;
-    for (const MeshGroup& group : mesh_.groups) triangles.insert(triangles.end(), group.indices.begin(), group.indices.end());
+    for (const MeshGroup& group : mesh_.groups)
+      triangles.insert(triangles.end(), group.indices.begin(), group.indices.end());
     const std::vector<Eigen::Vector3f> normals = AreaWeightedNormals(mesh_.vertices, triangles);
     for (size_t v = 0; v < mesh_.vertices.size(); ++v)
       if (needs_normal[v]) mesh_.vertices[v].normal = normals[v];
@@ -160,7 +162,8 @@ class ObjImporter {
       try {
         image = ReadImageRgba8(texture_path);
       } catch (const Error& error) {
-        warnings_->push_back(Str(file_, ": texture '", name, "' cannot be read (", error.what(), "); using a flat colour"));
+        warnings_->push_back(
+            Str(file_, ": texture '", name, "' cannot be read (", error.what(), "); using a flat colour"));
       }
     }
     texture_cache_[name] = image;

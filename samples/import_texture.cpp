@@ -49,8 +49,7 @@ Image8 ToRgba8(const Image8& image) {
   return out;
 }
 
-Image8 DecodeImageRgba8(std::span<const uint8_t> bytes, const std::string& format_hint,
-                        const std::string& what) {
+Image8 DecodeImageRgba8(std::span<const uint8_t> bytes, const std::string& format_hint, const std::string& what) {
   if (bytes.empty()) Fail(what, ": the image is empty");
   const std::string extension = ExtensionFor(bytes, format_hint);
   if (extension.empty()) Fail(what, ": unknown image format (expected PNG or JPEG)");
@@ -81,8 +80,7 @@ bool HasTransparency(const Image8& rgba) {
 }
 
 Image8 CoverageFromAlphaMap(const Image8& alpha_map) {
-  const bool use_alpha = (alpha_map.channels == 4 && HasTransparency(alpha_map)) ||
-                         alpha_map.channels == 2;
+  const bool use_alpha = (alpha_map.channels == 4 && HasTransparency(alpha_map)) || alpha_map.channels == 2;
   const int channel = use_alpha ? alpha_map.channels - 1 : 0;
   Image8 coverage(alpha_map.width, alpha_map.height, 1);
   for (int y = 0; y < alpha_map.height; ++y)

@@ -15,8 +15,7 @@ namespace voltree {
 // Decodes an encoded image (PNG, JPEG, ...) held in memory. `format_hint` is a MIME type
 // ("image/png") or a file name whose extension names the format; the magic bytes win when they
 // are recognised. `what` names the image in errors. Throws Error when it cannot be decoded.
-Image8 DecodeImageRgba8(std::span<const uint8_t> bytes, const std::string& format_hint,
-                        const std::string& what);
+Image8 DecodeImageRgba8(std::span<const uint8_t> bytes, const std::string& format_hint, const std::string& what);
 
 // Reads an image file as RGBA8 straight alpha (grey and RGB gain an opaque alpha).
 Image8 ReadImageRgba8(const std::filesystem::path& path);

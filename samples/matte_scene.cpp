@@ -54,7 +54,8 @@ MatteScene MakeMatteScene(int width, int height, uint32_t seed, float horizon) {
       // Crown: leaf coverage from noise, fading out at the ellipse edge.
       const float e = std::hypot((px - cx) / rx, (py - cy) / ry);
       const float leaves = ValueNoise(px, py, 3.0f, seed) * 0.6f + ValueNoise(px, py, 11.0f, seed + 1) * 0.4f;
-      const float crown_alpha = std::clamp((leaves - 0.35f) * 4.0f, 0.0f, 1.0f) * std::clamp((1.0f - e) * 5.0f, 0.0f, 1.0f);
+      const float crown_alpha =
+          std::clamp((leaves - 0.35f) * 4.0f, 0.0f, 1.0f) * std::clamp((1.0f - e) * 5.0f, 0.0f, 1.0f);
       const float shade = 0.7f + 0.5f * ValueNoise(px, py, 2.0f, seed + 2);
       const float crown[3] = {0.16f * shade, 0.36f * shade, 0.10f * shade};
       // Trunk: a vertical bar, antialiased at its sides and bottom.

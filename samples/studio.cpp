@@ -57,8 +57,8 @@ Image8 PartsMask(const ImageF& coverage) {
 
 }  // namespace
 
-void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs::path& workspace,
-                    Progress& progress, bool force) {
+void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs::path& workspace, Progress& progress,
+                    bool force) {
   options.Check();
   mesh.Check();
   const auto [lo_f, hi_f] = mesh.Bounds();
@@ -88,7 +88,8 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
       const double start = progress.ElapsedSeconds();
       auto layers = std::make_shared<StudioLayers>(renderer.Photograph(view));
       // Held-out views also get masks of the visible bark and leaves, to measure thin parts apart.
-      auto parts = std::make_shared<const Image8>(views == &rig.held_out ? PartsMask(renderer.RenderParts(view)) : Image8());
+      auto parts =
+          std::make_shared<const Image8>(views == &rig.held_out ? PartsMask(renderer.RenderParts(view)) : Image8());
       writers.wait();
       writers.run([layers, parts, folders, parts_folder, name = view.name] {
         WriteImage(folders.photos / name, layers->photo);
@@ -132,7 +133,7 @@ void PhotographTree(const TreeMesh& mesh, const StudioOptions& options, const fs
       {"colour", "sRGB; foreground and truth/rgba premultiplied; photo = foreground over background"},
   };
   WriteFileAtomic(root / "truth" / "meta.json", meta.dump(2) + "\n");
-  const nlohmann::json scene = {{"frame", "tree"},          {"up", {0, 0, 1}},         {"units", "metres"},
+  const nlohmann::json scene = {{"frame", "tree"},          {"up", {0, 0, 1}},          {"units", "metres"},
                                 {"bounds_min", bounds_min}, {"bounds_max", bounds_max}, {"source", "studio"}};
   WriteFileAtomic(root / "scene.json", scene.dump(2) + "\n");
   stage.Commit();

@@ -339,8 +339,8 @@ void StudioBackdrop::Draw(const View& view, const StudioLighting& lighting, int 
       ++count;
       shapes.insert(shapes.end(), {float(object.centre.x()), float(object.centre.y()), float(object.centre.z()),
                                    float(object.radius)});
-      kinds.insert(kinds.end(), {float(object.kind), float(object.vertical_radius), float(object.trunk_radius),
-                                 float(object.tint)});
+      kinds.insert(kinds.end(),
+                   {float(object.kind), float(object.vertical_radius), float(object.trunk_radius), float(object.tint)});
     }
     program_.Set("uObjectCount", static_cast<int>(count));
     if (count > 0) {

@@ -8,8 +8,7 @@
 
 namespace voltree {
 
-ClutterLayout MakeStudioClutter(uint64_t seed, const Eigen::Vector2d& centre, double tree_height,
-                                double clear_radius) {
+ClutterLayout MakeStudioClutter(uint64_t seed, const Eigen::Vector2d& centre, double tree_height, double clear_radius) {
   TreeRandom random(HashCombine(seed, 0xC1077E5ull));
   ClutterLayout layout;
   layout.wall_radius = 4 * clear_radius;

@@ -15,10 +15,10 @@ struct ClutterObject {
   enum Kind { kBush = 0, kRock = 1, kTree = 2 };
   Kind kind = kBush;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // of the ellipsoid (a tree's crown)
-  double radius = 1;                                  // horizontal
+  double radius = 1;                                 // horizontal
   double vertical_radius = 1;
-  double trunk_radius = 0;                            // trees: the trunk runs from 0 to centre.z()
-  double tint = 0;                                    // 0..1, varies the colour
+  double trunk_radius = 0;  // trees: the trunk runs from 0 to centre.z()
+  double tint = 0;          // 0..1, varies the colour
 };
 
 struct ClutterLayout {

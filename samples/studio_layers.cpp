@@ -39,8 +39,7 @@ StudioLayers ComposeStudioLayers(const ImageF& tree, const ImageF& backdrop) {
         const uint8_t behind = ToByte(LinearToSrgb(std::clamp(backdrop.at(x, y, c), 0.0f, 1.0f)));
         layers.foreground.at(x, y, c) = premultiplied;
         layers.background.at(x, y, c) = behind;
-        layers.photo.at(x, y, c) =
-            static_cast<uint8_t>(std::lround(premultiplied + (255 - alpha) * behind / 255.0f));
+        layers.photo.at(x, y, c) = static_cast<uint8_t>(std::lround(premultiplied + (255 - alpha) * behind / 255.0f));
       }
     }
   });

@@ -23,18 +23,18 @@ struct StudioOptions {
   int held_out = 8;                // truth views between the rings, at other azimuths
   int width = 512;
   int height = 512;
-  int supersample = 4;             // samples per pixel and axis, box-filtered (mattes get 1/s^2 steps)
+  int supersample = 4;  // samples per pixel and axis, box-filtered (mattes get 1/s^2 steps)
   // The same for the sky and ground, at most `supersample`: they need anti-aliasing, not
   // fractional coverage, and are the costliest shader (2x2 is a quarter of the 4x4 time).
   int backdrop_supersample = 2;
-  uint64_t seed = 1;               // ground and sky texture, clutter, first azimuth of the rings
+  uint64_t seed = 1;  // ground and sky texture, clutter, first azimuth of the rings
   BackdropStyle backdrop = BackdropStyle::kRealistic;
   CameraModel camera_model = CameraModel::kPinhole;
   // The model's parameters after focal length and principal point (SIMPLE_RADIAL: k;
   // RADIAL: k1 k2; OPENCV: k1 k2 p1 p2); empty means no distortion.
   std::vector<double> distortion;
-  double fov_degrees = 40;         // across the smaller image side
-  double margin = 0.08;            // fraction of the half-frame kept free around the tree's bounds
+  double fov_degrees = 40;            // across the smaller image side
+  double margin = 0.08;               // fraction of the half-frame kept free around the tree's bounds
   double min_elevation_degrees = 5;   // lowest ring, above the horizon
   double max_elevation_degrees = 35;  // highest ring
   double sun_azimuth_degrees = 135;

@@ -102,11 +102,11 @@ StudioRig MakeStudioRig(const Eigen::Vector3d& bounds_min, const Eigen::Vector3d
   }
   for (int k = 0; k < options.held_out; ++k) {
     // Halfway between rings; with one ring, halfway between it and 15 degrees higher.
-    const double elevation = options.rings == 1 ? ring_elevation(0) + 7.5 * kDegrees
-                                                : ring_elevation((k % (options.rings - 1)) + 0.5);
+    const double elevation =
+        options.rings == 1 ? ring_elevation(0) + 7.5 * kDegrees : ring_elevation((k % (options.rings - 1)) + 0.5);
     const double per_ring = static_cast<double>(options.views) / options.rings;
-    const double azimuth = first_azimuth + 2 * std::numbers::pi * (k + 0.5) / options.held_out +
-                           std::numbers::pi / (2 * per_ring);
+    const double azimuth =
+        first_azimuth + 2 * std::numbers::pi * (k + 0.5) / options.held_out + std::numbers::pi / (2 * per_ring);
     held_out.emplace_back(ViewName("held", k), Direction(azimuth, elevation));
   }
   // One distance for all views, the largest any of them needs, so that every view frames the tree.

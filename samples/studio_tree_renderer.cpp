@@ -101,9 +101,12 @@ struct PackedVertex {
 
 float AlphaCutoff(const Material& material) {
   switch (material.alpha_mode) {
-    case AlphaMode::kOpaque: return -1.0f;
-    case AlphaMode::kMask: return material.alpha_cutoff;
-    case AlphaMode::kBlend: return 0.5f;  // supersampling turns the cut edges into fractional alpha
+    case AlphaMode::kOpaque:
+      return -1.0f;
+    case AlphaMode::kMask:
+      return material.alpha_cutoff;
+    case AlphaMode::kBlend:
+      return 0.5f;  // supersampling turns the cut edges into fractional alpha
   }
   return -1.0f;
 }

@@ -26,8 +26,7 @@ float ButtressFactor(float flare, float angle, float height, float phase) {
   return 1.0f + 0.6f * flare * lobe * std::exp(-height / 0.45f);
 }
 
-void AppendTube(const TreeShape& shape, const Branch& branch, float buttress_phase, TreeMesh& mesh,
-                MeshGroup& group) {
+void AppendTube(const TreeShape& shape, const Branch& branch, float buttress_phase, TreeMesh& mesh, MeshGroup& group) {
   const int sides = std::max(3, shape.levels[branch.level].sides);
   const uint32_t first = static_cast<uint32_t>(mesh.vertices.size());
   // The bark texture (1:2 aspect) covers one circumference across and two along.
@@ -124,7 +123,8 @@ void AppendLeafQuad(const TreeShape& shape, const Eigen::Vector3f& anchor, const
   const FoliageShape& foliage = shape.foliage;
   const bool needles = foliage.kind == FoliageKind::kNeedles;
   const Eigen::Vector3f offset = (anchor - crown.center).cwiseQuotient(crown.radii);
-  const Eigen::Vector3f outward = offset.squaredNorm() > 1e-6f ? Eigen::Vector3f(offset.normalized()) : Eigen::Vector3f::UnitZ();
+  const Eigen::Vector3f outward =
+      offset.squaredNorm() > 1e-6f ? Eigen::Vector3f(offset.normalized()) : Eigen::Vector3f::UnitZ();
   // The cluster's stem follows the twig, bent outward (broad leaves reach for the light).
   Eigen::Vector3f axis = twig + random.UnitVector() * foliage.spread + outward * (needles ? 0.1f : 0.45f);
   if (!needles) axis.z() += 0.25f;
@@ -140,7 +140,8 @@ void AppendLeafQuad(const TreeShape& shape, const Eigen::Vector3f& anchor, const
   const float size = foliage.size * (1.0f + random.Jitter(foliage.size_jitter));
   const Eigen::Vector3f base = anchor - axis * (0.04f * size);  // the stem starts inside the twig
   Eigen::Vector3f corners[4] = {base - across * (0.5f * size), base + across * (0.5f * size),
-                                base + across * (0.5f * size) + axis * size, base - across * (0.5f * size) + axis * size};
+                                base + across * (0.5f * size) + axis * size,
+                                base - across * (0.5f * size) + axis * size};
   float lowest = 0.0f;
   for (const Eigen::Vector3f& corner : corners) lowest = std::min(lowest, corner.z());
   for (Eigen::Vector3f& corner : corners) corner.z() -= lowest;  // keep the tree above the ground

@@ -26,8 +26,8 @@ struct Material {
   Eigen::Vector4f base_color = Eigen::Vector4f::Ones();  // sRGB-encoded RGB, straight alpha
   int texture = -1;                                      // index into TreeMesh::textures, -1: none
   AlphaMode alpha_mode = AlphaMode::kOpaque;
-  float alpha_cutoff = 0.5f;                             // for kMask
-  bool double_sided = false;                             // leaves: lit from both sides
+  float alpha_cutoff = 0.5f;  // for kMask
+  bool double_sided = false;  // leaves: lit from both sides
 };
 
 // Triangles that share one material.

@@ -85,9 +85,12 @@ TreeShape YoungOakShape() {
 
 TreeShape PresetShape(TreePreset preset) {
   switch (preset) {
-    case TreePreset::kOak: return OakShape();
-    case TreePreset::kPine: return PineShape();
-    case TreePreset::kYoungOak: return YoungOakShape();
+    case TreePreset::kOak:
+      return OakShape();
+    case TreePreset::kPine:
+      return PineShape();
+    case TreePreset::kYoungOak:
+      return YoungOakShape();
   }
   Fail("unknown tree preset ", static_cast<int>(preset));
 }

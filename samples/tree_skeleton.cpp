@@ -155,8 +155,7 @@ float Branch::Length() const {
 }
 
 Eigen::Vector3f AnyPerpendicular(const Eigen::Vector3f& direction) {
-  const Eigen::Vector3f helper =
-      std::abs(direction.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
+  const Eigen::Vector3f helper = std::abs(direction.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
   return direction.cross(helper).normalized();
 }
 

@@ -80,8 +80,8 @@ struct FoliageShape2D {
   Eigen::Vector2f base;       // petiole end of a leaf, start of a stroke
   Eigen::Vector2f direction;  // unit
   float length = 0.0f;
-  float half_width = 0.0f;    // relative to length for a leaf, absolute for a stroke
-  float lobes = 0.0f;         // lobes per side of an oak leaf; 0: smooth
+  float half_width = 0.0f;  // relative to length for a leaf, absolute for a stroke
+  float lobes = 0.0f;       // lobes per side of an oak leaf; 0: smooth
   Rgb colour = Rgb::Zero();
   Rgb rib_colour = Rgb::Zero();
   Eigen::Vector2f box_min, box_max;
@@ -256,7 +256,8 @@ Image8 MakeBarkTexture(uint64_t seed, int width, int height) {
   constexpr int kRidges = 8;  // furrows around the circumference
   const uint64_t crack_seed = HashCombine(seed, 3);
   const TileableNoise warp_noise(3, 4, 4, HashCombine(seed, 1)), fibre_noise(48, 6, 3, HashCombine(seed, 2)),
-      wave_noise(16, 8, 1, crack_seed), width_noise(8, 6, 2, HashCombine(seed, 4)), tone_noise(2, 2, 2, HashCombine(seed, 5));
+      wave_noise(16, 8, 1, crack_seed), width_noise(8, 6, 2, HashCombine(seed, 4)),
+      tone_noise(2, 2, 2, HashCombine(seed, 5));
   const Rgb furrow(0.13f, 0.10f, 0.08f), plate(0.50f, 0.46f, 0.40f);
   // Rows are independent, so the parallel result is the same as the serial one.
   tbb::parallel_for(0, height, [&](int y) {
@@ -274,7 +275,8 @@ Image8 MakeBarkTexture(uint64_t seed, int width, int height) {
       const float offset = LatticeValue(Wrap(column, kRidges), 0, crack_seed);
       const float wave = 0.15f * (wave_noise(u, v) - 0.5f);
       const float crack_line = std::abs(std::fmod(v * 5.0f + offset + wave + 10.0f, 1.0f) - 0.5f);
-      const float crack_mask = Smoothstep(0.45f, 0.6f, LatticeValue(Wrap(column, kRidges), 1 + int(v * 5.0f + offset), crack_seed));
+      const float crack_mask =
+          Smoothstep(0.45f, 0.6f, LatticeValue(Wrap(column, kRidges), 1 + int(v * 5.0f + offset), crack_seed));
       relief *= 1.0f - 0.7f * crack_mask * Smoothstep(0.465f, 0.5f, crack_line);
       // Fine vertical fibres and broad tone changes (lichen-grey to brown).
       const float fibre = fibre_noise(u, v);

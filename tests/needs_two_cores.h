@@ -7,7 +7,7 @@
 
 #include <thread>
 
-#define VOLTREE_SKIP_UNLESS_TWO_CORES()                                                                   \
-  if (std::thread::hardware_concurrency() < 2)                                                            \
+#define VOLTREE_SKIP_UNLESS_TWO_CORES()                                                                       \
+  if (std::thread::hardware_concurrency() < 2)                                                                \
   GTEST_SKIP() << "needs 2 or more cores to compare threaded with single-threaded results (this machine has " \
                << std::thread::hardware_concurrency() << ")"

@@ -60,8 +60,8 @@ struct Drawing {
     const double n = double(std::max<size_t>(asset->views.size(), 1));
     home.distance = std::max(distance / n, home.radius * 1.1 * 1.01);
     home.elevation_degrees = elevation / n * 180 / M_PI;
-    const Eigen::Vector3d first =
-        asset->views.empty() ? Eigen::Vector3d(Eigen::Vector3d::UnitX()) : Eigen::Vector3d(asset->views[0].position - home.centre);
+    const Eigen::Vector3d first = asset->views.empty() ? Eigen::Vector3d(Eigen::Vector3d::UnitX())
+                                                       : Eigen::Vector3d(asset->views[0].position - home.centre);
     home.azimuth_degrees = std::atan2(first.y(), first.x()) * 180 / M_PI;
     return home;
   }
@@ -157,7 +157,8 @@ Image8 ReadWindow(int width, int height) {
   std::vector<uint8_t> rows(size_t(width) * height * 4);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   for (int y = 0; y < height; ++y)
-    std::copy_n(rows.data() + size_t(height - 1 - y) * width * 4, size_t(width) * 4, image.pixels.data() + size_t(y) * width * 4);
+    std::copy_n(rows.data() + size_t(height - 1 - y) * width * 4, size_t(width) * 4,
+                image.pixels.data() + size_t(y) * width * 4);
   for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
   return image;
 }
@@ -191,7 +192,8 @@ void DrawPanel(const ViewerOptions& options, const Session& session, const Panel
               session.render.lod.forced_level >= 0 ? " (forced)" : "");
   std::string per_level;
   for (size_t level = 0; level < stats.cells_per_level.size(); ++level)
-    if (stats.cells_per_level[level] > 0) per_level += Str(per_level.empty() ? "" : ", ", "L", level, " ", stats.cells_per_level[level]);
+    if (stats.cells_per_level[level] > 0)
+      per_level += Str(per_level.empty() ? "" : ", ", "L", level, " ", stats.cells_per_level[level]);
   ImGui::Text("drawn per level: %s", per_level.c_str());
   const char* blend = session.render.nearest_view_only ? "nearest only" : "blended";
   if (stats.instances_drawn + stats.instances_culled > 1 || options.input.extension() == ".json")
@@ -200,7 +202,8 @@ void DrawPanel(const ViewerOptions& options, const Session& session, const Panel
     ImGui::Text("views %d + %d (%.2f / %.2f), %s", stats.views.first, stats.views.second, stats.views.first_weight,
                 stats.views.second_weight, blend);
   ImGui::Text("instances %zu drawn, %zu culled", stats.instances_drawn, stats.instances_culled);
-  ImGui::Text("GPU %.1f KiB (buffers %.1f, atlases %.1f)", gpu.Total() / 1024.0, gpu.buffers / 1024.0, gpu.atlas / 1024.0);
+  ImGui::Text("GPU %.1f KiB (buffers %.1f, atlases %.1f)", gpu.Total() / 1024.0, gpu.buffers / 1024.0,
+              gpu.atlas / 1024.0);
   ImGui::Text("LOD %s, tint %s", LodRuleName(session.render.lod.rule), session.render.tint_levels ? "on" : "off");
   ImGui::TextDisabled("%s", renderer.c_str());
   ImGui::TextDisabled("drag turn, right drag pan, wheel zoom, WASD fly, R reset");
@@ -215,12 +218,14 @@ void ViewerOptions::Check() const {
   if (!std::filesystem::is_regular_file(input)) Fail(input.string(), ": file not found");
   if (width < 64 || height < 64 || width > 16384 || height > 16384)
     Fail("view: --size ", width, "x", height, " must be between 64 and 16384 on each side");
-  if (!asset_folder.empty() && !IsSceneFile(input)) Fail("view: --assets applies to a scene (.json), not to ", input.string());
+  if (!asset_folder.empty() && !IsSceneFile(input))
+    Fail("view: --assets applies to a scene (.json), not to ", input.string());
 }
 
 ViewerResult RunViewer(const ViewerOptions& options) {
   options.Check();
-  const std::vector<ViewerEvent> script = options.script.empty() ? std::vector<ViewerEvent>{} : ReadViewerScript(options.script);
+  const std::vector<ViewerEvent> script =
+      options.script.empty() ? std::vector<ViewerEvent>{} : ReadViewerScript(options.script);
   Drawing drawing;
   std::vector<VtreeAsset> scene_assets;
   if (IsSceneFile(options.input)) {
@@ -232,8 +237,10 @@ ViewerResult RunViewer(const ViewerOptions& options) {
 
   glfwSetErrorCallback([](int, const char* message) { g_glfw_error = message; });
   if (!glfwInit())
-    Fail("view: no display (", g_glfw_error, "); voltree view opens a window on a desktop session (DISPLAY or "
-         "WAYLAND_DISPLAY); without one, 'voltree render' draws the same frames headless (--orbit N or --cameras MODEL)");
+    Fail("view: no display (", g_glfw_error,
+         "); voltree view opens a window on a desktop session (DISPLAY or "
+         "WAYLAND_DISPLAY); without one, 'voltree render' draws the same frames headless (--orbit N or --cameras "
+         "MODEL)");
   struct Terminate {
     ~Terminate() { glfwTerminate(); }
   } terminate;
@@ -242,8 +249,8 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_RESIZABLE, options.script.empty() ? GLFW_TRUE : GLFW_FALSE);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height,
-                                        ("voltree view: " + options.input.filename().string()).c_str(), nullptr, nullptr);
+  GLFWwindow* window = glfwCreateWindow(
+      options.width, options.height, ("voltree view: " + options.input.filename().string()).c_str(), nullptr, nullptr);
   if (!window)
     Fail("view: this display gives no OpenGL 4.3 core profile context (", g_glfw_error,
          "), which the renderer needs; 'voltree render' draws headless through EGL instead");
@@ -265,7 +272,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   glfwSetScrollCallback(window, OnScroll);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+  ImGui::GetIO().IniFilename = nullptr;                              // no imgui.ini beside the user's files
   ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/true);  // chains the callbacks above
   ImGui_ImplOpenGL3_Init("#version 430 core");
 
@@ -294,13 +301,14 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     GpuMemory gpu;
     if (drawing.scene_renderer) {
       const SceneFrameStats frame = drawing.scene_renderer->Draw(camera, {session.render});
-      stats = {frame.frame_ms, frame.trees.cells, frame.trees.billboards, frame.instances_drawn, frame.instances_culled,
-               frame.trees.min_level, frame.trees.max_level, frame.trees.views, frame.trees.cells_per_level};
+      stats = {frame.frame_ms,        frame.trees.cells,      frame.trees.billboards,
+               frame.instances_drawn, frame.instances_culled, frame.trees.min_level,
+               frame.trees.max_level, frame.trees.views,      frame.trees.cells_per_level};
       gpu = drawing.scene_renderer->GpuBytes();
     } else {
       const FrameStats frame = drawing.tree->Draw(camera, session.render);
-      stats = {frame.frame_ms, frame.cells, frame.billboards, 1, 0, frame.min_level, frame.max_level, frame.views,
-               frame.cells_per_level};
+      stats = {frame.frame_ms,  frame.cells, frame.billboards,     1, 0, frame.min_level,
+               frame.max_level, frame.views, frame.cells_per_level};
       gpu = drawing.tree->GpuBytes();
     }
     CheckGl("view: drawing");

@@ -18,7 +18,9 @@ json Vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); 
 
 // What the page draws: one asset (placed as is, no ground) or a scene's instances and ground.
 json PageData(const WebPageOptions& options, WebPageResult* result) {
-  json data = {{"name", options.input.filename().string()}, {"assets", json::array()}, {"instances", json::array()},
+  json data = {{"name", options.input.filename().string()},
+               {"assets", json::array()},
+               {"instances", json::array()},
                {"ground", nullptr}};
   auto add_asset = [&](const std::filesystem::path& path, const VtreeAsset& asset) {
     // Raw chunks: the page has no zstd decoder. The same format version, checked the same way.
@@ -34,7 +36,8 @@ json PageData(const WebPageOptions& options, WebPageResult* result) {
     for (size_t i = 0; i < assets.size(); ++i) add_asset(scene.assets[i].path, assets[i]);
     data["single"] = false;
     for (const SceneInstance& instance : scene.instances)
-      data["instances"].push_back({{"asset", instance.asset}, {"position", Vec(instance.transform.translation)},
+      data["instances"].push_back({{"asset", instance.asset},
+                                   {"position", Vec(instance.transform.translation)},
                                    {"rotation", instance.transform.rotation_degrees},
                                    {"scale", instance.transform.scale}});
     if (scene.ground) {
@@ -55,7 +58,8 @@ void WebPageOptions::Check() const {
   if (input.empty()) Fail("web: an asset (.vtree) or a scene (.json) is required");
   if (output.empty()) Fail("web: an output folder (-o DIR) is required");
   if (!std::filesystem::is_regular_file(input)) Fail(input.string(), ": file not found");
-  if (!asset_folder.empty() && !IsSceneFile(input)) Fail("web: --assets applies to a scene (.json), not to ", input.string());
+  if (!asset_folder.empty() && !IsSceneFile(input))
+    Fail("web: --assets applies to a scene (.json), not to ", input.string());
 }
 
 WebPageResult WriteWebPage(const WebPageOptions& options) {
@@ -64,8 +68,10 @@ WebPageResult WriteWebPage(const WebPageOptions& options) {
   WebPageResult result;
   const json data = PageData(options, &result);
   StagedDirectory staged(options.output, options.force);
-  const std::string script = "// Written by voltree web: the scene and its .vtree assets (base64), read by voltree.js.\n"
-                             "var VOLTREE_DATA = " + data.dump() + ";\n";
+  const std::string script =
+      "// Written by voltree web: the scene and its .vtree assets (base64), read by voltree.js.\n"
+      "var VOLTREE_DATA = " +
+      data.dump() + ";\n";
   const std::pair<std::string, std::string_view> files[] = {
       {"index.html", PageFile("index.html")}, {"voltree.js", PageFile("voltree.js")}, {"data.js", script}};
   for (const auto& [name, bytes] : files) {

@@ -16,10 +16,10 @@
 namespace voltree {
 
 struct WebPageOptions {
-  std::filesystem::path input;   // a .vtree asset or a scene .json
-  std::filesystem::path output;  // the page's folder (built aside, renamed into place)
+  std::filesystem::path input;         // a .vtree asset or a scene .json
+  std::filesystem::path output;        // the page's folder (built aside, renamed into place)
   std::filesystem::path asset_folder;  // scenes: where their assets are looked up (default: the scene's folder)
-  bool force = false;            // replace an existing output folder
+  bool force = false;                  // replace an existing output folder
   void Check() const;
 };
 

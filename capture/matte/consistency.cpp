@@ -268,8 +268,8 @@ MatteConsistency MeasureMatteConsistency(const std::vector<View>& views, const s
                                          const MatteConsistencyOptions& options) {
   options.Check();
   if (views.size() != mattes.size() || views.size() < 3)
-    Fail("matte consistency needs one matte per view and at least 3 views (", views.size(), " views, ",
-         mattes.size(), " mattes)");
+    Fail("matte consistency needs one matte per view and at least 3 views (", views.size(), " views, ", mattes.size(),
+         " mattes)");
   CarvedHull hull = CarveTwice(views, mattes, options);
   const Grid& grid = hull.grid;
   const std::vector<uint8_t>& kept = hull.kept;
@@ -282,8 +282,8 @@ MatteConsistency MeasureMatteConsistency(const std::vector<View>& views, const s
   tbb::parallel_for(size_t(0), views.size(), [&](size_t v) {
     const PhotoMasks& mask = masks[v];
     cv::Mat projection = cv::Mat::zeros(mask.tree.size(), CV_8UC1);
-    const double depth = std::max(views[v].pose.ToCamera(grid.Center(grid.cells.x() / 2, grid.cells.y() / 2,
-                                                                      grid.cells.z() / 2)).z(), 1e-9);
+    const double depth = std::max(
+        views[v].pose.ToCamera(grid.Center(grid.cells.x() / 2, grid.cells.y() / 2, grid.cells.z() / 2)).z(), 1e-9);
     const int radius =
         int(std::ceil(views[v].camera.FocalX() * mask.scale.x() * grid.voxel * 0.87 / depth));  // half-diagonal
     size_t seen = 0, on_matte = 0;
@@ -313,7 +313,8 @@ void CheckMatteConsistency(const MatteConsistency& consistency, const MatteConsi
   options.Check();
   const size_t photos = consistency.photos.size();
   if (consistency.hull_voxels == 0)
-    Fail("the mattes in ", mattes_folder, " disagree with the cameras: no point is on the tree in (nearly) every "
+    Fail("the mattes in ", mattes_folder,
+         " disagree with the cameras: no point is on the tree in (nearly) every "
          "photo, so their visual hull is empty. Check that each matte belongs to the photo of the same name, and "
          "that the cameras (sparse/) are those of these photos");
   std::vector<PhotoConsistency> bad;
@@ -329,8 +330,8 @@ void CheckMatteConsistency(const MatteConsistency& consistency, const MatteConsi
                 std::round(bad[i].precision * 1000) / 1000);
   if (bad.size() > 12) list += Str("\n  ... (", bad.size(), " in all)");
   Fail("the mattes in ", mattes_folder, " disagree with the cameras in ", bad.size(), " of ", photos,
-       " photos (the visual hull of all mattes, projected back; limits: recall ", options.min_recall,
-       ", precision ", options.min_precision, "):", list,
+       " photos (the visual hull of all mattes, projected back; limits: recall ", options.min_recall, ", precision ",
+       options.min_precision, "):", list,
        "\nLow recall: the matte holds what no other photo agrees is tree (ground or sky taken for it). Low "
        "precision: the matte misses what the others agree on (the tree cut out, another photo's matte, or a "
        "camera that is off). ",

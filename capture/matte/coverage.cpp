@@ -45,16 +45,18 @@ void CheckMatteCoverage(const std::vector<NamedCoverage>& mattes, const MatteCov
     message += Str("\n  ", too_much.size(), " of ", mattes.size(), " cover more than ", Percent(limits.max_coverage),
                    " of the frame: ", List(too_much));
   if (!too_little.empty())
-    message += Str("\n  ", too_little.size(), " of ", mattes.size(), " cover less than ",
-                   Percent(limits.min_coverage), " of the frame: ", List(too_little));
+    message += Str("\n  ", too_little.size(), " of ", mattes.size(), " cover less than ", Percent(limits.min_coverage),
+                   " of the frame: ", List(too_little));
   if (computed)
-    message += "\nA matte that covers most of the frame took the ground or the sky for the tree; one that covers "
-               "almost nothing found no tree. Try --horizon ROW (the horizon's row as a fraction of the height, "
-               "where the ground behind the tree begins), --refine guided, or bring your own mattes with "
-               "--mattes FOLDER; leave photos without the tree out of images/.";
+    message +=
+        "\nA matte that covers most of the frame took the ground or the sky for the tree; one that covers "
+        "almost nothing found no tree. Try --horizon ROW (the horizon's row as a fraction of the height, "
+        "where the ground behind the tree begins), --refine guided, or bring your own mattes with "
+        "--mattes FOLDER; leave photos without the tree out of images/.";
   else
-    message += "\nCheck that each matte belongs to the photo of the same name and is white (255) on the tree "
-               "and black (0) elsewhere.";
+    message +=
+        "\nCheck that each matte belongs to the photo of the same name and is white (255) on the tree "
+        "and black (0) elsewhere.";
   Fail(message);
 }
 

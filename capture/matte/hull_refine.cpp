@@ -139,8 +139,7 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   return result;
 }
 
-HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematteOptions& options,
-                                           Progress& progress) {
+HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematteOptions& options, Progress& progress) {
   const std::vector<View> views = ReadColmapModel(dir / "sparse").Views();
   std::vector<Image8> photos, mattes;
   for (const View& view : views) {
@@ -158,8 +157,9 @@ HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematt
   }
   progress.Say("matte", Str(result.trusted.size(), " of ", views.size(), " mattes agree through the cameras; ",
                             result.rematted.empty() ? std::string("none re-matted")
-                                                    : Str(result.rematted.size(), " re-matted inside the visual hull "
-                                                                                  "of those")));
+                                                    : Str(result.rematted.size(),
+                                                          " re-matted inside the visual hull "
+                                                          "of those")));
   return result;
 }
 

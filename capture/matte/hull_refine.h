@@ -30,11 +30,11 @@ struct HullRematteOptions {
   // most this many times the median photo's background voxels (matte_consistency.h).
   double max_carve_fraction = 0.15;
   double max_keep_ratio = 3.0;
-  double min_trusted_fraction = 0.25;     // fewer trusted photos: nothing is changed
-  double confident_alpha = 0.95;          // the old matte's tree kept as known foreground
-  int guard_passes = 3;                   // re-matting of the photos the guard would name, at most
-  MatteOptions matte;                     // how the unknown is solved
-  void Check() const;                     // throws Error naming the field
+  double min_trusted_fraction = 0.25;  // fewer trusted photos: nothing is changed
+  double confident_alpha = 0.95;       // the old matte's tree kept as known foreground
+  int guard_passes = 3;                // re-matting of the photos the guard would name, at most
+  MatteOptions matte;                  // how the unknown is solved
+  void Check() const;                  // throws Error naming the field
 };
 
 struct HullRematteResult {

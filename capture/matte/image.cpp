@@ -13,8 +13,10 @@ namespace voltree {
 MatteResult MatteImage(const Image8& photo, const MatteOptions& options) {
   if (photo.channels < 3) Fail("MatteImage: expected an RGB photo, got ", photo.channels, " channels");
   cv::Mat rgb;
-  if (photo.channels == 4) cv::cvtColor(matte::View(photo), rgb, cv::COLOR_RGBA2RGB);
-  else rgb = matte::View(photo);
+  if (photo.channels == 4)
+    cv::cvtColor(matte::View(photo), rgb, cv::COLOR_RGBA2RGB);
+  else
+    rgb = matte::View(photo);
   const matte::Segmentation segmentation = matte::SegmentTree(rgb, options);
   const cv::Mat alpha = matte::RefineAlpha(rgb, segmentation.alpha, segmentation.trimap, segmentation.solve, options);
 

@@ -11,8 +11,8 @@ MatteError CompareMattes(const Image8& estimate, const Image8& truth) {
   if (estimate.channels != 1 || truth.channels != 1)
     Fail("CompareMattes: expected 1-channel mattes, got ", estimate.channels, " and ", truth.channels);
   if (estimate.width != truth.width || estimate.height != truth.height)
-    Fail("CompareMattes: matte is ", estimate.width, "x", estimate.height, " but the truth is ", truth.width,
-         "x", truth.height);
+    Fail("CompareMattes: matte is ", estimate.width, "x", estimate.height, " but the truth is ", truth.width, "x",
+         truth.height);
   // Integer sums: exact and order-independent.
   uint64_t sum_abs = 0, sum_sq = 0, band_sq = 0, band = 0;
   for (size_t i = 0; i < truth.pixels.size(); ++i) {

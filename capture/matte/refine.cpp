@@ -61,9 +61,14 @@ cv::Mat RefineAlpha(const cv::Mat& rgb, const cv::Mat& estimate, const cv::Mat& 
   CV_Assert(rgb.type() == CV_8UC3 && estimate.type() == CV_32F && trimap.type() == CV_8U && solve.type() == CV_8U);
   cv::Mat alpha = estimate.clone();
   switch (options.refine) {
-    case RefineMethod::kGuided: GuidedRefine(rgb, estimate, options).copyTo(alpha, solve); break;
-    case RefineMethod::kInfoFlow: alpha = InfoFlowOnTiles(rgb, estimate, trimap, solve, options.infoflow_tile); break;
-    case RefineMethod::kNone: break;
+    case RefineMethod::kGuided:
+      GuidedRefine(rgb, estimate, options).copyTo(alpha, solve);
+      break;
+    case RefineMethod::kInfoFlow:
+      alpha = InfoFlowOnTiles(rgb, estimate, trimap, solve, options.infoflow_tile);
+      break;
+    case RefineMethod::kNone:
+      break;
   }
   return ApplyTrimap(alpha, trimap);
 }

@@ -131,9 +131,11 @@ cv::Mat SeparateTrunkFromGround(const cv::Mat& rgb, const cv::Mat& alpha, const 
         // Confident colour-test answers are fixed; GrabCut decides the rest.
         const float b = barkness.at<float>(y, x);
         const bool in_tree = tree.at<uint8_t>(y, x) != 0;
-        mask.at<uint8_t>(y, x) = y < start ? (a > 0.9f ? cv::GC_FGD : a < 0.02f ? cv::GC_BGD : cv::GC_PR_BGD)
-                                 : in_tree  ? (b > 0.75f ? cv::GC_FGD : cv::GC_PR_FGD)
-                                            : (b < 0.25f ? cv::GC_BGD : cv::GC_PR_BGD);
+        mask.at<uint8_t>(y, x) = y < start ? (a > 0.9f    ? cv::GC_FGD
+                                              : a < 0.02f ? cv::GC_BGD
+                                                          : cv::GC_PR_BGD)
+                                 : in_tree ? (b > 0.75f ? cv::GC_FGD : cv::GC_PR_FGD)
+                                           : (b < 0.25f ? cv::GC_BGD : cv::GC_PR_BGD);
       }
     // GrabCut seeds its GMMs with k-means on the thread's cv::theRNG(); reseed it so the result
     // does not depend on what ran before on this thread.
@@ -158,8 +160,10 @@ cv::Mat CutFromGround(const cv::Mat& rgb, const MatteOptions& options) {
   const double scale = std::min(1.0, double(options.grabcut_max_side) / std::max(rgb.rows, rgb.cols));
   cv::Mat small = rgb;
   if (scale < 1.0)
-    cv::resize(rgb, small, cv::Size(std::max(1, int(std::lround(rgb.cols * scale))), std::max(1, int(std::lround(rgb.rows * scale)))),
-               0, 0, cv::INTER_AREA);
+    cv::resize(
+        rgb, small,
+        cv::Size(std::max(1, int(std::lround(rgb.cols * scale))), std::max(1, int(std::lround(rgb.rows * scale)))), 0,
+        0, cv::INTER_AREA);
   const int border = std::max(2, std::min(small.rows, small.cols) * 3 / 100);
   if (small.rows <= 3 * border || small.cols <= 3 * border) return cv::Mat::zeros(rgb.size(), CV_8U);
   cv::Mat mask(small.size(), CV_8U, cv::Scalar(cv::GC_BGD));
@@ -278,8 +282,9 @@ Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options) {
 
   if (horizon < rows) {
     const cv::Mat ground = ~above;
-    const cv::Mat tree = horizon > 0 ? SeparateTrunkFromGround(rgb, result.alpha, sky_pixels, horizon, result.horizon_row, options)
-                                     : CutFromGround(rgb, options);
+    const cv::Mat tree =
+        horizon > 0 ? SeparateTrunkFromGround(rgb, result.alpha, sky_pixels, horizon, result.horizon_row, options)
+                    : CutFromGround(rgb, options);
     result.alpha.setTo(1.0f, tree);
     // Hard GrabCut edges are uncertain within the band radius.
     const int radius = options.band_radius > 0 ? options.band_radius : std::max(1, std::min(rows, cols) / 256);

@@ -13,8 +13,8 @@
 namespace voltree::matte {
 
 struct Segmentation {
-  cv::Mat alpha;        // CV_32F in [0, 1]: colour alpha above the horizon, GrabCut mask below
-  cv::Mat trimap;       // CV_8U: 0 background, 128 unknown, 255 foreground
+  cv::Mat alpha;   // CV_32F in [0, 1]: colour alpha above the horizon, GrabCut mask below
+  cv::Mat trimap;  // CV_8U: 0 background, 128 unknown, 255 foreground
   // CV_8U, non-zero where the refinement decides alpha: the unknown band around GrabCut's hard
   // edges, and sky pixels where the leaf and sky colours are too alike for the colour alpha.
   // Elsewhere in the unknown region the colour alpha stands (the sky behind it is known).

@@ -88,8 +88,8 @@ std::vector<fs::path> ListPhotos(const fs::path& images_dir) {
   for (const fs::path& photo : photos) {
     const auto [it, inserted] = by_stem.emplace(photo.stem().string(), photo);
     if (!inserted)
-      Fail(photo.string(), ": has the same name as ", it->second.string(),
-           "; their mattes would collide in mattes/", photo.stem().string(), ".png");
+      Fail(photo.string(), ": has the same name as ", it->second.string(), "; their mattes would collide in mattes/",
+           photo.stem().string(), ".png");
   }
   return photos;
 }
@@ -121,12 +121,13 @@ void CheckPhotoSizes(const std::vector<fs::path>& photos) {
   for (const fs::path& photo : photos) {
     const auto size = ReadImageSize(photo);
     if (size.first < kMinSide || size.second < kMinSide)
-      Fail(photo.string(), ": photo is ", size.first, "x", size.second, "; expected at least ", kMinSide, "x",
-           kMinSide, " pixels");
+      Fail(photo.string(), ": photo is ", size.first, "x", size.second, "; expected at least ", kMinSide, "x", kMinSide,
+           " pixels");
     const bool turned = size.first == first.second && size.second == first.first;  // portrait and landscape
     if (size != first && !turned)
       Fail(photo.string(), ": photo is ", size.first, "x", size.second, " but ", photos.front().string(), " is ",
-           first.first, "x", first.second, "; expected every photo of a capture to have the same size (or turned by "
+           first.first, "x", first.second,
+           "; expected every photo of a capture to have the same size (or turned by "
            "90 degrees)");
   }
 }

@@ -48,9 +48,7 @@ Image8 Photo(int width, int height) {
 
 // PNG chunk: length, type, data, CRC-32 of type and data.
 std::string PngChunk(const std::string& type, const std::string& data) {
-  auto be32 = [](uint32_t v) {
-    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-  };
+  auto be32 = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
   const std::string typed = type + data;
   return be32(uint32_t(data.size())) + typed + be32(Crc32(typed.data(), typed.size()));
 }
@@ -64,8 +62,8 @@ std::string DecompressionBombPng() {
 }
 
 struct BadInputCase {
-  const char* name;        // what is wrong, as the README table says it
-  const char* arguments;   // voltree's arguments, run in the case's folder
+  const char* name;                              // what is wrong, as the README table says it
+  const char* arguments;                         // voltree's arguments, run in the case's folder
   std::function<void(const fs::path&)> prepare;  // writes the user's files into the case's folder
   int exit_status;
   std::vector<const char*> key_words;  // each must appear in the output
@@ -92,33 +90,47 @@ const std::vector<BadInputCase>& Cases() {
          WriteFileAtomic(d / "X" / "photos" / "p.txt", "keep\n");
          WriteFileAtomic(d / "X" / "demo.json", "{}\n");
        },
-       1, {"X", "not a previous demo", ".voltree-demo", "--force"}},
-      {"a truncated JPEG photo", "matte ws --refine none --quiet",
+       1,
+       {"X", "not a previous demo", ".voltree-demo", "--force"}},
+      {"a truncated JPEG photo",
+       "matte ws --refine none --quiet",
        [](const fs::path& d) {
          WriteImage(d / "ws" / "images" / "a.jpg", Photo(64, 48));
          const std::string bytes = ReadFile(d / "ws" / "images" / "a.jpg");
          WriteFileAtomic(d / "ws" / "images" / "a.jpg", bytes.substr(0, bytes.size() / 2));
        },
-       1, {"ws/images/a.jpg", "damaged image", "Premature end", "complete file"}},
-      {"a 64-byte PNG that declares 60000x60000 pixels", "matte ws --refine none --quiet",
+       1,
+       {"ws/images/a.jpg", "damaged image", "Premature end", "complete file"}},
+      {"a 64-byte PNG that declares 60000x60000 pixels",
+       "matte ws --refine none --quiet",
        [](const fs::path& d) { WriteFileAtomic(d / "ws" / "images" / "bomb.png", DecompressionBombPng()); },
-       1, {"ws/images/bomb.png", "60000x60000", "16384x16384"}},
-      {"photos of different sizes", "matte ws --refine none --quiet",
+       1,
+       {"ws/images/bomb.png", "60000x60000", "16384x16384"}},
+      {"photos of different sizes",
+       "matte ws --refine none --quiet",
        [](const fs::path& d) {
          WritePhotos(d / "ws" / "images", 1, 64, 48);
          WriteImage(d / "ws" / "images" / "view_9.png", Photo(48, 40));
        },
-       1, {"ws/images/view_9.png", "48x40", "64x48", "same size"}},
-      {"a 1x1 photo", "matte ws --refine none --quiet",
+       1,
+       {"ws/images/view_9.png", "48x40", "64x48", "same size"}},
+      {"a 1x1 photo",
+       "matte ws --refine none --quiet",
        [](const fs::path& d) { WritePhotos(d / "ws" / "images", 1, 1, 1); },
-       1, {"ws/images/view_0.png", "1x1", "at least 16x16"}},
-      {"a negative orbit", "render tree.vtree --orbit -3 -o frames",
+       1,
+       {"ws/images/view_0.png", "1x1", "at least 16x16"}},
+      {"a negative orbit",
+       "render tree.vtree --orbit -3 -o frames",
        [](const fs::path& d) { WriteFileAtomic(d / "tree.vtree", "not read\n"); },
-       1, {"--orbit -3", "1 or more"}},
-      {"an orbit of 0 frames", "render tree.vtree --orbit 0 -o frames",
+       1,
+       {"--orbit -3", "1 or more"}},
+      {"an orbit of 0 frames",
+       "render tree.vtree --orbit 0 -o frames",
        [](const fs::path& d) { WriteFileAtomic(d / "tree.vtree", "not read\n"); },
-       1, {"--orbit 0", "1 or more"}},
-      {"--known-cameras whose image names are not the photos'", "calibrate ws --known-cameras model",
+       1,
+       {"--orbit 0", "1 or more"}},
+      {"--known-cameras whose image names are not the photos'",
+       "calibrate ws --known-cameras model",
        [](const fs::path& d) {
          WritePhotos(d / "ws" / "images", 3, 32, 24);
          WriteFileAtomic(d / "model" / "cameras.txt", "1 PINHOLE 32 24 30 30 16 12\n");
@@ -126,13 +138,21 @@ const std::vector<BadInputCase>& Cases() {
                          "1 1 0 0 0 0 0 5 1 a.png\n\n2 1 0 0 0 0 5 0 1 b.png\n\n3 1 0 0 0 5 0 0 1 c.png\n\n");
          WriteFileAtomic(d / "model" / "points3D.txt", "");
        },
-       1, {"have a camera in model", "a.png, b.png, c.png", "view_0.png", "expected the model's image names"}},
-      {"--level beyond the asset's finest level", "render ws/tree.vtree --level 99 -o frames",
-       [](const fs::path& d) { MakeTinyDemo(d / "ws"); }, 1, {"--level 99", "ws/tree.vtree", "levels 0..2"}},
-      {"a codebook larger than the billboards allow (a warning)", "compress ws --codebook 65536 -o small.vtree --quiet",
-       [](const fs::path& d) { MakeTinyDemo(d / "ws"); }, 0,
-       {"warning", "--codebook 65536", "only", "codewords"}, "small.vtree"},
-      {"cameras that all stand at one pose", "calibrate ws --known-cameras model",
+       1,
+       {"have a camera in model", "a.png, b.png, c.png", "view_0.png", "expected the model's image names"}},
+      {"--level beyond the asset's finest level",
+       "render ws/tree.vtree --level 99 -o frames",
+       [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
+       1,
+       {"--level 99", "ws/tree.vtree", "levels 0..2"}},
+      {"a codebook larger than the billboards allow (a warning)",
+       "compress ws --codebook 65536 -o small.vtree --quiet",
+       [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
+       0,
+       {"warning", "--codebook 65536", "only", "codewords"},
+       "small.vtree"},
+      {"cameras that all stand at one pose",
+       "calibrate ws --known-cameras model",
        [](const fs::path& d) {
          WritePhotos(d / "ws" / "images", 3, 32, 24);
          WriteFileAtomic(d / "model" / "cameras.txt", "1 PINHOLE 32 24 30 30 16 12\n");
@@ -141,25 +161,34 @@ const std::vector<BadInputCase>& Cases() {
          WriteFileAtomic(d / "model" / "images.txt", images);
          WriteFileAtomic(d / "model" / "points3D.txt", "");
        },
-       1, {"model", "all 3 cameras stand at one position", "expected photos taken from around the tree"}},
-      {"--import of a model with a camera whose photo is not in images/", "calibrate ws --import M",
+       1,
+       {"model", "all 3 cameras stand at one position", "expected photos taken from around the tree"}},
+      {"--import of a model with a camera whose photo is not in images/",
+       "calibrate ws --import M",
        [](const fs::path& d) {
          MakeTinyDemo(d / "ws");
          fs::rename(d / "ws" / "sparse", d / "M");
          for (const char* folder : {"images", "mattes", "foreground"}) fs::remove(d / "ws" / folder / "view_003.png");
        },
-       1, {"camera for view_003.png", "no matte ws/mattes/view_003.png", "no photo in ws/images", "expected a matte"}},
-      {"a workspace you may not write to", "matte ws --refine none --quiet",
+       1,
+       {"camera for view_003.png", "no matte ws/mattes/view_003.png", "no photo in ws/images", "expected a matte"}},
+      {"a workspace you may not write to",
+       "matte ws --refine none --quiet",
        [](const fs::path& d) {
          WritePhotos(d / "ws" / "images", 1, 32, 24);
          fs::permissions(d, fs::perms::all);  // the user may enter the case's folder, but not write in ws
          fs::permissions(d / "ws", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
                                        fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
        },
-       1, {"ws/mattes", "Permission denied"}, nullptr, true},
-      {"an output folder inside a file", "synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o file/out",
+       1,
+       {"ws/mattes", "Permission denied"},
+       nullptr,
+       true},
+      {"an output folder inside a file",
+       "synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o file/out",
        [](const fs::path& d) { WriteFileAtomic(d / "file", "a file, not a folder\n"); },
-       1, {"file/out", "Not a directory"}},
+       1,
+       {"file/out", "Not a directory"}},
   };
   return cases;
 }
@@ -211,7 +240,8 @@ TEST_P(BadInput, FailsClearlyAndLeavesTheUsersFilesAlone) {
   const test::Outcome outcome = RunVoltree(bad.arguments, dir_, bad.unprivileged);
   EXPECT_EQ(outcome.status, bad.exit_status) << bad.name << "\n" << outcome.output;
   for (const char* word : bad.key_words)
-    EXPECT_NE(outcome.output.find(word), std::string::npos) << bad.name << ": no '" << word << "' in\n" << outcome.output;
+    EXPECT_NE(outcome.output.find(word), std::string::npos) << bad.name << ": no '" << word << "' in\n"
+                                                            << outcome.output;
   EXPECT_EQ(outcome.output.find("internal error"), std::string::npos) << outcome.output;
   EXPECT_EQ(outcome.output.find(".partial-"), std::string::npos) << "names a staging folder: " << outcome.output;
   Snapshot after = TakeSnapshot(dir_);
@@ -238,7 +268,8 @@ std::string ReadmeTable() {
 TEST(BadInputTable, ReadmeTableMatchesTheCases) {
   const std::string readme = ReadFile(fs::path(VOLTREE_SOURCE_DIR) / "README.md");
   EXPECT_NE(readme.find(ReadmeTable()), std::string::npos)
-      << "README.md's bad-input table is out of date; replace it with:\n" << ReadmeTable();
+      << "README.md's bad-input table is out of date; replace it with:\n"
+      << ReadmeTable();
 }
 
 }  // namespace

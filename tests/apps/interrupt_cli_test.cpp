@@ -30,9 +30,8 @@ namespace fs = std::filesystem;
 // Starts voltree in `cwd` with SIGINT and SIGTERM at their defaults (a shell's "&" would ignore
 // SIGINT), output to log.txt; returns its pid.
 pid_t SpawnVoltree(const std::string& arguments, const fs::path& cwd) {
-  std::vector<std::string> words = {"/bin/sh", "-c",
-                                    Str("cd '", cwd.string(), "' && exec '", VOLTREE_BINARY, "' ", arguments,
-                                        " > log.txt 2>&1")};
+  std::vector<std::string> words = {
+      "/bin/sh", "-c", Str("cd '", cwd.string(), "' && exec '", VOLTREE_BINARY, "' ", arguments, " > log.txt 2>&1")};
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -104,8 +103,8 @@ class Interrupt : public ::testing::Test {
     int status = 0;
     ::waitpid(pid, &status, 0);
     ASSERT_TRUE(started) << "no file appeared in " << staging << "; log:\n" << ReadFile(dir_ / "log.txt");
-    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number)
-        << "status " << status << "; log:\n" << ReadFile(dir_ / "log.txt");
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << "status " << status << "; log:\n"
+                                                                          << ReadFile(dir_ / "log.txt");
     EXPECT_TRUE(StagingLeftovers(dir_).empty()) << StagingLeftovers(dir_).front();
   }
   fs::path dir_;
@@ -122,7 +121,8 @@ TEST_F(Interrupt, SigtermDuringMatteLeavesThePhotosAndNothingElse) {
   Image8 photo(384, 384, 3);
   for (int y = 0; y < 384; ++y)
     for (int x = 0; x < 384; ++x) {
-      const bool tree = (x - 192) * (x - 192) + (y - 150) * (y - 150) < 110 * 110 || (std::abs(x - 192) < 15 && y > 150);
+      const bool tree =
+          (x - 192) * (x - 192) + (y - 150) * (y - 150) < 110 * 110 || (std::abs(x - 192) < 15 && y > 150);
       for (int c = 0; c < 3; ++c)
         photo.at(x, y, c) = uint8_t((tree ? (c == 1 ? 110 : 50) : (c == 2 ? 230 : 170)) + random() % 40);
     }
@@ -140,7 +140,8 @@ TEST_F(Interrupt, StagingOfADeadProcessIsRemovedByTheNextRun) {
   WriteFileAtomic(stale / "images" / "half.png", "half a photo");
   const fs::path live = dir_ / Str(".out.partial-", ::getpid());  // a live process's: kept
   WriteFileAtomic(live / "x", "in use");
-  const pid_t pid = SpawnVoltree("synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 --quiet -o out", dir_);
+  const pid_t pid =
+      SpawnVoltree("synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 --quiet -o out", dir_);
   int status = 0;
   ::waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << ReadFile(dir_ / "log.txt");

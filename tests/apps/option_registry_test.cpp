@@ -68,8 +68,7 @@ TEST(OptionRegistry, HelpListsEachOptionWithTheDefaultOfItsStruct) {
   for (const char* name : {"reconstruct", "run", "demo"}) {
     CLI::App* command = app->get_subcommand(name);
     EXPECT_EQ(command->get_option("--levels")->get_default_str(), std::to_string(defaults.levels)) << name;
-    EXPECT_EQ(command->get_option("--iterations")->get_default_str(),
-              std::to_string(defaults.opacity.sart.iterations))
+    EXPECT_EQ(command->get_option("--iterations")->get_default_str(), std::to_string(defaults.opacity.sart.iterations))
         << name;
     EXPECT_EQ(command->get_option("--solver")->get_default_str(), "sart") << name;
   }

@@ -20,8 +20,8 @@ class TinyAssetSuite : public ::testing::Test {
     std::filesystem::remove_all(dir_);
     const std::string d = dir_.string();
     build_status_ = Voltree("synth --tree oak --views 8 --size 96x96 --quiet -o " + d + "/capture && " +
-                            VOLTREE_BINARY + " reconstruct " + d + "/capture --levels 4 --quiet && " +
-                            VOLTREE_BINARY + " compress " + d + "/capture --quiet");
+                            VOLTREE_BINARY + " reconstruct " + d + "/capture --levels 4 --quiet && " + VOLTREE_BINARY +
+                            " compress " + d + "/capture --quiet");
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
   // In SetUp: the suite's tests need the program `tool`, which scripts/setup.sh installs as `package`.

@@ -39,8 +39,9 @@ class ViewWindow : public test::TinyAssetSuite {
   // `voltree render` from a screenshot's saved camera, over the viewer's grey.
   static Image8 RenderSaved(const std::string& input, const fs::path& camera_model, const std::string& name) {
     const fs::path frames = Dir() / ("render_" + name);
-    const test::Outcome outcome = test::VoltreeCaptured("render '" + input + "' --cameras '" + camera_model.string() +
-                                                        "' --background 128,128,128 --quiet -o '" + frames.string() + "'");
+    const test::Outcome outcome =
+        test::VoltreeCaptured("render '" + input + "' --cameras '" + camera_model.string() +
+                              "' --background 128,128,128 --quiet -o '" + frames.string() + "'");
     EXPECT_EQ(outcome.status, 0) << outcome.output;
     return ReadImage8(frames / (camera_model.filename().string() + ".png"), 4);
   }
@@ -53,7 +54,6 @@ class ViewWindow : public test::TinyAssetSuite {
     return CompareViews(a, b).rgb_psnr;
   }
 };
-
 
 TEST_F(ViewWindow, ScreenshotMatchesRenderAndTintChangesIt) {
   const test::Outcome outcome = View(Asset().string(),
@@ -106,7 +106,8 @@ TEST_F(ViewWindow, SceneFlownThroughMatchesRender) {
 }
 
 TEST_F(ViewWindow, WithoutADisplayNamesRender) {
-  const test::Outcome outcome = test::VoltreeCaptured("view '" + Asset().string() + "'", "", "env -u DISPLAY -u WAYLAND_DISPLAY ");
+  const test::Outcome outcome =
+      test::VoltreeCaptured("view '" + Asset().string() + "'", "", "env -u DISPLAY -u WAYLAND_DISPLAY ");
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("no display"), std::string::npos) << outcome.output;
   EXPECT_NE(outcome.output.find("voltree render"), std::string::npos) << outcome.output;
@@ -123,8 +124,8 @@ TEST_F(ViewWindow, TooOldOpenGlIsNamed) {
 
 TEST_F(ViewWindow, BadScriptLineIsNamed) {
   WriteFileAtomic(Dir() / "bad.txt", "0.1 drag 10 10\n0.2 jump 3\n");
-  const test::Outcome outcome = test::VoltreeCaptured("view '" + Asset().string() + "' --script '" +
-                                                      (Dir() / "bad.txt").string() + "'");
+  const test::Outcome outcome =
+      test::VoltreeCaptured("view '" + Asset().string() + "' --script '" + (Dir() / "bad.txt").string() + "'");
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("bad.txt:2: unknown action 'jump'"), std::string::npos) << outcome.output;
 }

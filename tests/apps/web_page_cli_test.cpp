@@ -86,8 +86,9 @@ class WebPage : public test::TinyAssetSuite {
     model.images[1] = image;
     const fs::path cameras = Dir() / ("cameras_" + name), frames = Dir() / ("render_" + name);
     WriteColmapText(cameras, model);
-    const test::Outcome outcome = test::VoltreeCaptured("render '" + input + "' --cameras '" + cameras.string() +
-                                                        "' --background 128,128,128 --quiet -o '" + frames.string() + "'");
+    const test::Outcome outcome =
+        test::VoltreeCaptured("render '" + input + "' --cameras '" + cameras.string() +
+                              "' --background 128,128,128 --quiet -o '" + frames.string() + "'");
     EXPECT_EQ(outcome.status, 0) << outcome.output;
     return ReadImage8(frames / (name + ".png"), 4);
   }
@@ -125,14 +126,13 @@ class WebPage : public test::TinyAssetSuite {
   }
 };
 
-
 TEST_F(WebPage, MatchesRenderFromTwoCameras) {
   const fs::path page = WritePage(Asset().string(), "asset");
   // A held-out camera of the studio (at 256x256), and a closer one that draws finer levels.
   View held_out = ReadColmapText(Dir() / "capture" / "truth" / "sparse").Views().at(0);
-  held_out.camera = Camera::Pinhole(kWidth, kHeight, held_out.camera.FocalX() * kWidth / held_out.camera.width,
-                                    held_out.camera.FocalY() * kHeight / held_out.camera.height, 0.5 * kWidth,
-                                    0.5 * kHeight);
+  held_out.camera =
+      Camera::Pinhole(kWidth, kHeight, held_out.camera.FocalX() * kWidth / held_out.camera.width,
+                      held_out.camera.FocalY() * kHeight / held_out.camera.height, 0.5 * kWidth, 0.5 * kHeight);
   const View close = LookingAt("close", Eigen::Vector3d(9, -11, 5), Eigen::Vector3d(0, 0, 4), 300);
   const Image8 render_a = Render(Asset().string(), held_out, "held_out");
   const Image8 render_b = Render(Asset().string(), close, "close");
@@ -188,9 +188,9 @@ TEST_F(WebPage, SceneOfThreeInstancesMatchesRender) {
 // size, shows what eval measured (its voltree image over the same grey, no LOD history).
 TEST_F(WebPage, ReportFrameMatchesEvalsImage) {
   const fs::path report = Dir() / "report";
-  const test::Outcome outcome = test::VoltreeCaptured("eval '" + (Dir() / "capture").string() +
-                                                      "' --eval-levels auto --no-input --no-plots --quiet --report '" +
-                                                      report.string() + "'");
+  const test::Outcome outcome =
+      test::VoltreeCaptured("eval '" + (Dir() / "capture").string() +
+                            "' --eval-levels auto --no-input --no-plots --quiet --report '" + report.string() + "'");
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   const std::string html = ReadFile(report / "index.html");
   const size_t frame = html.find("<iframe src=\"");
@@ -212,7 +212,8 @@ TEST_F(WebPage, ReportFrameMatchesEvalsImage) {
   std::system(command.c_str());
   ASSERT_TRUE(fs::exists(png)) << command;
   const Image8 shot = ReadImage8(png, 4);
-  const Image8 measured = ReadImage8(report / "eval" / "held_out" / (fs::path(held_out.name).stem().string() + "_voltree.png"), 4);
+  const Image8 measured =
+      ReadImage8(report / "eval" / "held_out" / (fs::path(held_out.name).stem().string() + "_voltree.png"), 4);
   const double psnr = Psnr(shot, measured);
   std::printf("report frame vs eval's image: %.2f dB\n", psnr);
   EXPECT_GE(psnr, kMinPsnr);

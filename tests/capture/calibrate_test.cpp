@@ -82,8 +82,8 @@ TEST(CalibrateEndToEnd, FindsTheStudioCameras) {
   // Origin at the trunk base and the height from it. Measured: origin 0.6 % of the height from
   // the true base, scale 0.3 % off (the visual hull's own base was 3.9 % below the ground, which
   // is why calibrate takes the base from the ground points).
-  EXPECT_LT(align.translation.norm(), 0.02 * height) << "estimated origin in the true frame: "
-                                                      << align.translation.transpose();
+  EXPECT_LT(align.translation.norm(), 0.02 * height)
+      << "estimated origin in the true frame: " << align.translation.transpose();
   EXPECT_NEAR(align.scale, 1.0, 0.015);
 
   const auto scene = nlohmann::json::parse(ReadFile(dir / "scene.json"));

@@ -56,7 +56,8 @@ TEST_F(MatteCliTest, MattesAWorkspaceAndRefusesToOverwrite) {
 
   outcome = Run(Str("matte '", workspace.string(), "' --refine magic"));
   EXPECT_NE(outcome.status, 0);
-  EXPECT_NE(outcome.output.find("--refine 'magic': expected one of infoflow, guided, none"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("--refine 'magic': expected one of infoflow, guided, none"), std::string::npos)
+      << outcome.output;
 }
 
 TEST_F(MatteCliTest, ImportsUserMattes) {
@@ -67,7 +68,8 @@ TEST_F(MatteCliTest, ImportsUserMattes) {
   Image8 rgba(scene.alpha.width, scene.alpha.height, 4, 255);
   for (size_t i = 0; i < scene.alpha.pixels.size(); ++i) rgba.pixels[i * 4 + 3] = scene.alpha.pixels[i];
   WriteImage(dir_ / "user" / "a.png", rgba);
-  const test::Outcome outcome = Run(Str("matte '", workspace.string(), "' --quiet --mattes '", (dir_ / "user").string(), "'"));
+  const test::Outcome outcome =
+      Run(Str("matte '", workspace.string(), "' --quiet --mattes '", (dir_ / "user").string(), "'"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   EXPECT_EQ(ReadImage8(workspace / "mattes" / "a.png"), scene.alpha);
   // Premultiplied foreground recovered from the photo and the matte: measured mean error 4.5/255
@@ -78,7 +80,8 @@ TEST_F(MatteCliTest, ImportsUserMattes) {
   size_t count = 0;
   for (size_t i = 0; i < scene.alpha.pixels.size(); ++i) {
     if (scene.alpha.pixels[i] == 0) continue;
-    for (int c = 0; c < 3; ++c) error += std::abs(int(foreground.pixels[i * 4 + c]) - int(scene.foreground.pixels[i * 4 + c]));
+    for (int c = 0; c < 3; ++c)
+      error += std::abs(int(foreground.pixels[i * 4 + c]) - int(scene.foreground.pixels[i * 4 + c]));
     count += 3;
   }
   EXPECT_LT(error / count, 6.0);
@@ -95,8 +98,8 @@ TEST_F(MatteCliTest, ImportsUserMattes) {
 // photos alone `run` mends those through the cameras (tests/pipeline/run_photos_alone_cli_test).
 TEST_F(MatteCliTest, MattesAStudioSet) {
   const fs::path workspace = dir_ / "oak";
-  test::Outcome outcome = Run(Str("synth --tree oak --views 4 --held-out 1 --size 256x256 --backdrop plain --quiet -o '",
-                            workspace.string(), "'"));
+  test::Outcome outcome = Run(Str(
+      "synth --tree oak --views 4 --held-out 1 --size 256x256 --backdrop plain --quiet -o '", workspace.string(), "'"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   fs::rename(workspace / "mattes", dir_ / "true_mattes");
   fs::remove_all(workspace / "foreground");
@@ -106,7 +109,8 @@ TEST_F(MatteCliTest, MattesAStudioSet) {
   const auto photos = ListPhotos(workspace / "images");
   for (const fs::path& photo : photos) {
     const std::string name = photo.stem().string() + ".png";
-    const MatteError error = CompareMattes(ReadImage8(workspace / "mattes" / name), ReadImage8(dir_ / "true_mattes" / name));
+    const MatteError error =
+        CompareMattes(ReadImage8(workspace / "mattes" / name), ReadImage8(dir_ / "true_mattes" / name));
     std::printf("%s: SAD %.3f MSE %.3f\n", name.c_str(), error.sad, error.mse);
     mse += error.mse / photos.size();
   }

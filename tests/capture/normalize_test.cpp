@@ -70,7 +70,8 @@ TEST(Normalize, UpFromAnOrbitUnderAnyRotation) {
   // A line of cameras (a walk past the tree) falls back to the photos' up.
   std::vector<View> line;
   for (int i = 0; i < 5; ++i)
-    line.push_back({"a", Camera::Pinhole(10, 10, 10, 10, 5, 5), Pose::LookAt({double(i), -4, 1}, {double(i), 0, 1}, {0, 0, 1})});
+    line.push_back(
+        {"a", Camera::Pinhole(10, 10, 10, 10, 5, 5), Pose::LookAt({double(i), -4, 1}, {double(i), 0, 1}, {0, 0, 1})});
   EXPECT_LT((EstimateUp(line) - Eigen::Vector3d::UnitZ()).norm(), 1e-9);
   EXPECT_THROW(EstimateUp({}), Error);
 }

@@ -59,7 +59,8 @@ TEST(CompressVolume, Deterministic) {
   const Volume volume = TestVolume();
   CompressOptions options = SmallCodebooks();
   options.alpha_weighted = true;
-  EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset), SerializeAsset(CompressVolume(volume, options).asset));
+  EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset),
+            SerializeAsset(CompressVolume(volume, options).asset));
 }
 
 TEST(CompressVolume, SameBytesWhateverTheThreads) {

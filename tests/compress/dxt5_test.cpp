@@ -31,7 +31,8 @@ std::vector<uint8_t> SmoothImage(int width, int height, uint64_t seed) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 4; ++c)
-        rgba[(size_t(y) * width + x) * 4 + c] = uint8_t((x * (c + 1) + y * (4 - c)) * 255 / (5 * (width + height)) + rng() % 9);
+        rgba[(size_t(y) * width + x) * 4 + c] =
+            uint8_t((x * (c + 1) + y * (4 - c)) * 255 / (5 * (width + height)) + rng() % 9);
   return rgba;
 }
 
@@ -52,7 +53,8 @@ TEST(Dxt5, EncodeDecodeIsClose) {
   ASSERT_EQ(blocks.size(), size_t(w * h));  // 1 byte per texel
   const auto decoded = DecodeDxt5(blocks.data(), w, h);
   double squared = 0;
-  for (size_t i = 0; i < image.size(); ++i) squared += (double(image[i]) - decoded[i]) * (double(image[i]) - decoded[i]);
+  for (size_t i = 0; i < image.size(); ++i)
+    squared += (double(image[i]) - decoded[i]) * (double(image[i]) - decoded[i]);
   // Measured RMS 2.2 on this image (texel noise of +-4 is what DXT cannot keep); a wrong block
   // order or channel swap gives an RMS of tens.
   EXPECT_LT(std::sqrt(squared / image.size()), 8.0);
@@ -73,7 +75,8 @@ TEST(Dxt5, GlDriverDecodesLikeTheReference) {
   const auto encoded = EncodeDxt5(SmoothImage(w, h / 2, 4).data(), w, h / 2);
   std::copy(encoded.begin(), encoded.end(), blocks.begin());  // half random, half real encodings
   const GlTexture texture = GlTexture::Dxt5(w, h, blocks, "upload DXT5");
-  const ShaderProgram program = ShaderProgram::Graphics("dxt5 fetch",
+  const ShaderProgram program = ShaderProgram::Graphics(
+      "dxt5 fetch",
       "#version 430 core\n"
       "void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(2 * p - 1, 0, 1); }\n",
       "#version 430 core\n"

@@ -85,7 +85,8 @@ TEST(Gla, SizeOneGivesMeanOrMedoid) {
     const float d = SquaredDistance(set.Vector(i), mean_f.data(), nullptr, set.dimension);
     if (d < best) best = d, closest = i;
   }
-  EXPECT_TRUE(std::equal(set.Vector(closest), set.Vector(closest) + set.dimension, modified.codebook.codewords.begin()));
+  EXPECT_TRUE(
+      std::equal(set.Vector(closest), set.Vector(closest) + set.dimension, modified.codebook.codewords.begin()));
 }
 
 TEST(Gla, MoreCodewordsThanVectorsIsExact) {

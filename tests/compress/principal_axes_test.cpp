@@ -17,8 +17,8 @@ TEST(PrincipalAxes, FindsTheStretchedDirectionsInOrder) {
   set.dimension = 4;
   for (int i = 0; i < 5000; ++i) {
     const float a = 10 * normal(rng), b = 3 * normal(rng);
-    set.vectors.insert(set.vectors.end(), {a / std::sqrt(2.f) + 0.1f * normal(rng), a / std::sqrt(2.f) + 0.1f * normal(rng),
-                                           b, 0.1f * normal(rng)});
+    set.vectors.insert(set.vectors.end(), {a / std::sqrt(2.f) + 0.1f * normal(rng),
+                                           a / std::sqrt(2.f) + 0.1f * normal(rng), b, 0.1f * normal(rng)});
   }
   const PrincipalAxes axes = FindPrincipalAxes(set, 2);
   ASSERT_EQ(axes.count, 2);

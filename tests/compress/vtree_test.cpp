@@ -123,7 +123,8 @@ TEST(Vtree, FlippedBytesAreCaughtByChecksums) {
     if (chunk.tag != "BBRD") continue;
     std::string corrupt = bytes;
     corrupt[chunk.offset + 28 + 5] ^= 0x40;
-    EXPECT_EQ(ErrorOf(corrupt), "tree.vtree: chunk BBRD at byte " + std::to_string(chunk.offset) + ": checksum mismatch");
+    EXPECT_EQ(ErrorOf(corrupt),
+              "tree.vtree: chunk BBRD at byte " + std::to_string(chunk.offset) + ": checksum mismatch");
     break;
   }
 }

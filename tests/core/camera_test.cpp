@@ -61,8 +61,7 @@ TEST(Camera, PrincipalPointIsWherTheOpticalAxisLands) {
 }
 
 TEST(Camera, ModelNamesRoundTripAndUnknownNamesFail) {
-  for (const Camera& camera : AllModels())
-    EXPECT_EQ(CameraModelFromName(CameraModelName(camera.model)), camera.model);
+  for (const Camera& camera : AllModels()) EXPECT_EQ(CameraModelFromName(CameraModelName(camera.model)), camera.model);
   try {
     CameraModelFromName("FISHEYE_42");
     FAIL() << "expected an Error";
@@ -140,7 +139,7 @@ TEST(Pose, ColmapQuaternionOrderAndCenter) {
   const double a = w / n, b = x / n, c = y / n, d = z / n;
   Eigen::Matrix3d by_hand;
   by_hand << 1 - 2 * (c * c + d * d), 2 * (b * c - a * d), 2 * (b * d + a * c),  //
-      2 * (b * c + a * d), 1 - 2 * (b * b + d * d), 2 * (c * d - a * b),          //
+      2 * (b * c + a * d), 1 - 2 * (b * b + d * d), 2 * (c * d - a * b),         //
       2 * (b * d - a * c), 2 * (c * d + a * b), 1 - 2 * (b * b + c * c);
   EXPECT_LT((pose.rotation.toRotationMatrix() - by_hand).norm(), 1e-12);
   const Eigen::Vector3d center = -by_hand.transpose() * pose.translation;

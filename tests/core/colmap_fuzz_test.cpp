@@ -30,12 +30,13 @@ const char* kPoints =
     "# 3D point list with one line of data per point:\n"
     "7 0.1 0.2 3.5 255 128 0 0.4 1 0 2 0\n"
     "8 -0.1 0.2 3.1 1 2 3 0.9 1 2 2 1\n";
-const char* kFrames = "10 1 1 0 0 0 1 2 3 1 CAMERA 1 1\n11 2 1 0 0 0 0 0 5 1 CAMERA 2 2\n12 1 1 0 0 0 0 0 1 1 CAMERA 1 3\n";
+const char* kFrames =
+    "10 1 1 0 0 0 1 2 3 1 CAMERA 1 1\n11 2 1 0 0 0 0 0 5 1 CAMERA 2 2\n12 1 1 0 0 0 0 0 1 1 CAMERA 1 3\n";
 const char* kRigs = "1 1 CAMERA 1\n2 1 CAMERA 2\n";
 
 // Bytes that steer the parser into interesting places.
-constexpr char kInteresting[] = {' ', '\n', '\r', '\t', '#', '-', '+', '.', 'e', 'E', '0', '1', '9',
-                                 'n', 'a', 'i', 'f', 'x', '\0', '\xff'};
+constexpr char kInteresting[] = {' ', '\n', '\r', '\t', '#', '-', '+', '.', 'e',  'E',
+                                 '0', '1',  '9',  'n',  'a', 'i', 'f', 'x', '\0', '\xff'};
 
 std::string Mutate(std::string text, std::mt19937& random) {
   std::uniform_int_distribution<int> kind(0, 5);
@@ -43,12 +44,24 @@ std::string Mutate(std::string text, std::mt19937& random) {
   for (int m = 0; m < mutations && !text.empty(); ++m) {
     const size_t at = random() % text.size();
     switch (kind(random)) {
-      case 0: text[at] = char(random() & 0xff); break;                                  // random byte
-      case 1: text[at] = kInteresting[random() % sizeof(kInteresting)]; break;          // steered byte
-      case 2: text.resize(at); break;                                                   // truncation
-      case 3: text.erase(at, 1 + random() % 8); break;                                  // deletion
-      case 4: text.insert(at, 1, kInteresting[random() % sizeof(kInteresting)]); break; // insertion
-      case 5: text.insert(at, "99999999999999999999 "); break;                          // overflow
+      case 0:
+        text[at] = char(random() & 0xff);
+        break;  // random byte
+      case 1:
+        text[at] = kInteresting[random() % sizeof(kInteresting)];
+        break;  // steered byte
+      case 2:
+        text.resize(at);
+        break;  // truncation
+      case 3:
+        text.erase(at, 1 + random() % 8);
+        break;  // deletion
+      case 4:
+        text.insert(at, 1, kInteresting[random() % sizeof(kInteresting)]);
+        break;  // insertion
+      case 5:
+        text.insert(at, "99999999999999999999 ");
+        break;  // overflow
     }
   }
   return text;
@@ -58,9 +71,11 @@ TEST(ColmapFuzz, DamagedModelsOnlyThrowError) {
   const fs::path folder = fs::path(::testing::TempDir()) / "voltree_colmap_fuzz";
   fs::remove_all(folder);
   fs::create_directories(folder);
-  const std::vector<std::pair<std::string, std::string>> files = {
-      {"cameras.txt", kCameras}, {"images.txt", kImages}, {"points3D.txt", kPoints},
-      {"frames.txt", kFrames}, {"rigs.txt", kRigs}};
+  const std::vector<std::pair<std::string, std::string>> files = {{"cameras.txt", kCameras},
+                                                                  {"images.txt", kImages},
+                                                                  {"points3D.txt", kPoints},
+                                                                  {"frames.txt", kFrames},
+                                                                  {"rigs.txt", kRigs}};
   for (const auto& [name, text] : files) WriteFileAtomic(folder / name, text);
   ASSERT_NO_THROW(ReadColmapText(folder)) << "the unmutated model must be valid";
 

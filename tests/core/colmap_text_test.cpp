@@ -160,8 +160,8 @@ TEST(ColmapText, MalformedFilesNameFileAndLine) {
   };
   const std::string cameras_ok = std::string(kCameraHeader) + "1 PINHOLE 640 480 500 500 320 240\n";
   const std::vector<Case> cases = {
-      {"too_few_params", "cameras.txt", std::string(kCameraHeader) + "1 PINHOLE 640 480 500 500 320\n",
-       "cameras.txt:3", "needs 8 fields"},
+      {"too_few_params", "cameras.txt", std::string(kCameraHeader) + "1 PINHOLE 640 480 500 500 320\n", "cameras.txt:3",
+       "needs 8 fields"},
       {"not_a_number", "cameras.txt", std::string(kCameraHeader) + "1 PINHOLE 640 480 500 5OO 320 240\n",
        "cameras.txt:3", "PARAMS: expected a number, got '5OO'"},
       {"not_an_integer", "cameras.txt", std::string(kCameraHeader) + "1 PINHOLE 640.5 480 500 500 320 240\n",
@@ -187,8 +187,7 @@ TEST(ColmapText, MalformedFilesNameFileAndLine) {
        "duplicate IMAGE_ID 1"},
       {"point_fields", "points3D.txt", "# points\n100 0 0 0 1 2 3 0.5 2\n", "points3D.txt:2", "pairs"},
       {"point_colour", "points3D.txt", "# points\n100 0 0 0 1 256 3 0.5\n", "points3D.txt:2", "0..255"},
-      {"point_track_image", "points3D.txt", "# points\n100 0 0 0 1 2 3 0.5 77 0\n", "points3D.txt:2",
-       "IMAGE_ID 77"},
+      {"point_track_image", "points3D.txt", "# points\n100 0 0 0 1 2 3 0.5 77 0\n", "points3D.txt:2", "IMAGE_ID 77"},
       {"infinite", "points3D.txt", "# points\n100 0 inf 0 1 2 3 0.5\n", "points3D.txt:2", "finite"},
   };
   for (const Case& c : cases) {
@@ -211,8 +210,7 @@ TEST(ColmapText, MissingFolderOrFileIsAnError) {
 // COLMAP >= 3.12 writes rigs.txt and frames.txt; the image pose is sensor_from_rig * rig_from_world.
 TEST(ColmapText, RigAwareLayoutTakesPosesFromFrames) {
   const fs::path folder = FreshFolder("rigs");
-  WriteFileAtomic(folder / "cameras.txt",
-                  "1 PINHOLE 640 480 500 500 320 240\n2 PINHOLE 640 480 500 500 320 240\n");
+  WriteFileAtomic(folder / "cameras.txt", "1 PINHOLE 640 480 500 500 320 240\n2 PINHOLE 640 480 500 500 320 240\n");
   // images.txt poses are deliberately stale: the frames are authoritative.
   WriteFileAtomic(folder / "images.txt",
                   "1 1 0 0 0 9 9 9 1 left.png\n\n2 1 0 0 0 9 9 9 2 right.png\n\n3 1 0 0 0 9 9 9 1 left2.png\n\n");
@@ -229,10 +227,10 @@ TEST(ColmapText, RigAwareLayoutTakesPosesFromFrames) {
   // Camera 2: rotated 180 degrees about Z relative to the rig, offset -0.5 in x.
   // R_2 = Rz(180) * I; t_2 = Rz(180) * (1, 2, 3) + (-0.5, 0, 0) = (-1.5, -2, 3).
   EXPECT_LT((model.images.at(2).pose.translation - Eigen::Vector3d(-1.5, -2, 3)).norm(), 1e-12);
-  EXPECT_LT((model.images.at(2).pose.rotation.toRotationMatrix() -
-             Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix())
-                .norm(),
-            1e-12);
+  EXPECT_LT(
+      (model.images.at(2).pose.rotation.toRotationMatrix() - Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix())
+          .norm(),
+      1e-12);
   EXPECT_LT((model.images.at(3).pose.translation - Eigen::Vector3d(0, 0, 4)).norm(), 1e-15);
 
   // An image in no frame is an error naming images.txt and its line.

@@ -16,10 +16,10 @@ TEST(ContactSheet, LaysOutThumbnailsInRowsWithGaps) {
   options.gap = 2;
   const Image8 sheet = MakeContactSheet(images, options);
   EXPECT_EQ(sheet.width, 2 + 3 * 12);
-  EXPECT_EQ(sheet.height, 2 + 2 * 7);  // thumbnails are 10x5
-  EXPECT_EQ(sheet.at(2, 2, 0), 0);                 // first thumbnail
-  EXPECT_EQ(sheet.at(2 + 12 + 5, 4, 1), 40);       // second, middle
-  EXPECT_EQ(sheet.at(2 + 12, 2 + 7, 2), 160);      // fifth: second row, second column
+  EXPECT_EQ(sheet.height, 2 + 2 * 7);          // thumbnails are 10x5
+  EXPECT_EQ(sheet.at(2, 2, 0), 0);             // first thumbnail
+  EXPECT_EQ(sheet.at(2 + 12 + 5, 4, 1), 40);   // second, middle
+  EXPECT_EQ(sheet.at(2 + 12, 2 + 7, 2), 160);  // fifth: second row, second column
   EXPECT_EQ(sheet.at(0, 0, 0), options.background);
   EXPECT_EQ(sheet.at(2 + 24 + 3, 2 + 7 + 2, 0), options.background);  // empty sixth slot
 }

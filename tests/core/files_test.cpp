@@ -72,8 +72,7 @@ TEST(StagedDirectory, LeavesNothingWhenNotCommitted) {
     StagedDirectory staged(root / "out", false);
     WriteFileAtomic(staged.path() / "half.txt", "half");
     Fail("stage failed");
-  } catch (const Error&) {
-  }
+  } catch (const Error&) {}
   EXPECT_EQ(EntryCount(root), 0u);
 }
 

@@ -96,7 +96,7 @@ TEST(ImageMetrics, CheckerboardNoiseVanishesAtCoarseScales) {
       for (int c = 0; c < 3; ++c) render.at(x, y, c) = uint8_t(render.at(x, y, c) + ((x + y) % 2 ? 6 : -6));
   const ViewMetrics m = CompareViews(render, truth);
   EXPECT_NEAR(m.rgb_psnr, 20 * std::log10(255.0 / 6.0), 1e-9);  // MSE = 36
-  ASSERT_EQ(m.rms_per_scale.size(), 6u);                         // 32, 16, 8, 4, 2, 1
+  ASSERT_EQ(m.rms_per_scale.size(), 6u);                        // 32, 16, 8, 4, 2, 1
   EXPECT_NEAR(m.rms_per_scale[0], 6.0 / 255.0, 1e-6);
   for (size_t i = 1; i < m.rms_per_scale.size(); ++i) EXPECT_NEAR(m.rms_per_scale[i], 0.0, 1e-7) << i;
   EXPECT_NEAR(m.multiscale_rms, 6.0 / 255.0 / 6.0, 1e-6);

@@ -18,7 +18,7 @@ TEST(InterruptCleanup, RemovesStagingOfDeadProcessesOnly) {
   fs::remove_all(folder);
   const pid_t child = ::fork();
   if (child == 0) ::_exit(0);
-  ::waitpid(child, nullptr, 0);  // reaped: its id names no process now
+  ::waitpid(child, nullptr, 0);      // reaped: its id names no process now
   const pid_t parent = ::getppid();  // alive
   for (const char* tag : {"partial", "old", "tmp"}) WriteFileAtomic(folder / Str(".out.", tag, "-", child) / "f", "x");
   WriteFileAtomic(folder / Str(".out.partial-", parent) / "f", "x");

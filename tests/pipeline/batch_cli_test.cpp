@@ -2,8 +2,8 @@
 // captures (8 photos of 96x96, 3 levels, codebooks of 32). Every asset is built; a second run
 // does nothing; a deleted asset is rebuilt alone; a capture whose photos are broken fails alone,
 // named with its log; --dry-run prints the planned jobs (also through the example SLURM profile,
-// which submits nothing in a dry run); a survey CSV places the trees; and the bad inputs get their messages. Skipped when the
-// binary is not built.
+// which submits nothing in a dry run); a survey CSV places the trees; and the bad inputs get their messages. Skipped
+// when the binary is not built.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -56,7 +56,8 @@ class BatchCli : public ::testing::Test {
     const fs::path root = captures_ / name;
     fs::remove_all(root);
     fs::create_directories(root);
-    for (const std::string& tree : trees) fs::copy(captures_ / "studio" / tree, root / tree, fs::copy_options::recursive);
+    for (const std::string& tree : trees)
+      fs::copy(captures_ / "studio" / tree, root / tree, fs::copy_options::recursive);
     WriteFileAtomic(root / "batch.yaml", kBatchYaml);
     return root;
   }
@@ -87,8 +88,7 @@ TEST_F(BatchCli, BuildsEveryCaptureResumesAndRebuildsOnlyWhatIsMissing) {
     EXPECT_TRUE(fs::is_regular_file(root / tree / "logs" / "reconstruct.tsv")) << tree;
   }
   // The summary: every capture built, with its photos, held-out PSNR and times; the folder named.
-  for (const std::string& tree : kTrees)
-    EXPECT_TRUE(Has(first.output, "\n" + tree + " ")) << first.output;
+  for (const std::string& tree : kTrees) EXPECT_TRUE(Has(first.output, "\n" + tree + " ")) << first.output;
   EXPECT_TRUE(Has(first.output, "8/8")) << first.output;
   EXPECT_TRUE(Has(first.output, " dB")) << first.output;
   EXPECT_TRUE(Has(first.output, "notes      skipped (no images/)")) << first.output;
@@ -141,7 +141,8 @@ TEST_F(BatchCli, ABrokenCaptureFailsAloneAndIsNamedWithItsLog) {
   const fs::path root = Root("broken", {"oak", "pine"});
   // Photos alone (no mattes, no cameras), none of them readable.
   fs::create_directories(root / "broken" / "images");
-  for (const char* name : {"a.png", "b.png", "c.jpg"}) WriteFileAtomic(root / "broken" / "images" / name, "not a photo");
+  for (const char* name : {"a.png", "b.png", "c.jpg"})
+    WriteFileAtomic(root / "broken" / "images" / name, "not a photo");
   const Outcome outcome = Batch(root, "-j 2");
   EXPECT_NE(outcome.status, 0) << outcome.output;
   EXPECT_TRUE(fs::is_regular_file(root / "oak" / "tree.vtree")) << outcome.output;
@@ -168,7 +169,8 @@ TEST_F(BatchCli, DryRunPrintsThePlannedJobsAndRunsNothing) {
   const Outcome outcome = Batch(root, "--dry-run");
   ASSERT_EQ(outcome.status, 0) << outcome.output;
   EXPECT_TRUE(Has(outcome.output, "planned Job stats")) << outcome.output;
-  for (const char* rule : {"reconstruct        3", "compress           3", "eval               3", "scene              1"})
+  for (const char* rule :
+       {"reconstruct        3", "compress           3", "eval               3", "scene              1"})
     EXPECT_TRUE(Has(outcome.output, rule)) << rule << "\n" << outcome.output;
   EXPECT_FALSE(Has(outcome.output, "matte  ")) << "the studio's mattes are kept\n" << outcome.output;
   EXPECT_TRUE(Has(outcome.output, "to do (reconstruct)")) << outcome.output;

@@ -165,8 +165,8 @@ TEST_F(EvalCli, RefusesToReplaceAReportItDidNotWrite) {
   const fs::path report = dir_ / "user_report";
   fs::create_directories(report);
   WriteFileAtomic(report / "index.html", "<html>the user's own page</html>\n");
-  const std::string command = "eval " + dir_.string() + " --eval-levels auto --no-input --no-plots --quiet --report " +
-                              report.string();
+  const std::string command =
+      "eval " + dir_.string() + " --eval-levels auto --no-input --no-plots --quiet --report " + report.string();
   EXPECT_NE(Voltree(command + " > /dev/null 2>&1"), 0);
   EXPECT_EQ(ReadFile(report / "index.html"), "<html>the user's own page</html>\n");
   EXPECT_FALSE(fs::exists(report / "metrics.json"));  // refused before writing anything
@@ -178,8 +178,8 @@ TEST_F(EvalCli, HelpTeachesEveryOption) {
   const std::string help = dir_.string() + "/eval_help.txt";
   ASSERT_EQ(Voltree("eval --help > " + help), 0);
   const std::string text = ReadFile(help);
-  for (const char* option : {"--asset", "--report", "--grey", "--eval-levels", "--no-input", "--no-images", "--no-plots",
-                             "--codebook-sweep", "--scene-bench", "--budget", "--force", "--quiet"})
+  for (const char* option : {"--asset", "--report", "--grey", "--eval-levels", "--no-input", "--no-images",
+                             "--no-plots", "--codebook-sweep", "--scene-bench", "--budget", "--force", "--quiet"})
     EXPECT_NE(text.find(option), std::string::npos) << option;
   EXPECT_NE(text.find("DIR/tree.vtree"), std::string::npos);
   EXPECT_NE(text.find("DIR/report"), std::string::npos);

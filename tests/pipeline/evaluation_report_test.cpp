@@ -39,7 +39,7 @@ TEST(EvaluationReport, MetricsJsonNamesEveryImageAndLeavesOutWhatWasNotMeasured)
   EXPECT_EQ(json["settings"]["levels"], 3);
   EXPECT_EQ(json["view_counts"]["held_out"], 2);
   EXPECT_TRUE(json["truth_alignment"].is_null());
-  EXPECT_FALSE(json.contains("budget"));                               // not measured
+  EXPECT_FALSE(json.contains("budget"));                                  // not measured
   EXPECT_TRUE(json["pruning"]["levels"][1]["pruned_percent"].is_null());  // NaN is not JSON
 }
 

@@ -39,7 +39,8 @@ TEST(RunPhotosAlone, RegistersEveryPhotoMattesAndReconstructs) {
   fs::copy(truth / "sparse", dir / "truth" / "input_sparse", fs::copy_options::recursive);
   const std::string run = "run " + dir.string() +
                           " --max-image-size 256 --levels 5 --codebook 128 --alpha-codebook 128 --orbit 2 "
-                          "--orbit-size 64 --eval-levels auto --quiet > " + (root / "run.txt").string() + " 2>&1";
+                          "--orbit-size 64 --eval-levels auto --quiet > " +
+                          (root / "run.txt").string() + " 2>&1";
   ASSERT_EQ(Voltree(run), 0) << ReadFile(root / "run.txt");
   EXPECT_TRUE(fs::exists(dir / "tree.vtree"));
 

@@ -35,8 +35,9 @@ std::string CsvError(const std::string& text) {
 }
 
 TEST(SceneLayout, ReadsASurveyWithColumnsInAnyOrder) {
-  const fs::path path = WriteCsv("positions", "# park survey\nScale, tree, y, x, rotation\n1.5, oak_1, -2, 3.25, 90\n\n"
-                                              "1, pine, 4, 0, -15\n");
+  const fs::path path = WriteCsv("positions",
+                                 "# park survey\nScale, tree, y, x, rotation\n1.5, oak_1, -2, 3.25, 90\n\n"
+                                 "1, pine, 4, 0, -15\n");
   const std::vector<ScenePlacement> placements = ReadPositionsCsv(path);
   fs::remove(path);
   ASSERT_EQ(placements.size(), 2u);

@@ -26,8 +26,8 @@ struct Outcome {
 inline Outcome VoltreeCaptured(const std::string& arguments, const std::string& cwd = "",
                                const std::string& prefix = "") {
   Outcome outcome;
-  const std::string command = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + prefix + "'" + VOLTREE_BINARY + "' " +
-                              arguments + " 2>&1";
+  const std::string command =
+      (cwd.empty() ? "" : "cd '" + cwd + "' && ") + prefix + "'" + VOLTREE_BINARY + "' " + arguments + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;

@@ -20,8 +20,8 @@ ReconstructInput RingOfSize(int size) {
 TEST(AutoLevels, FinestTexelCoversAboutOnePixel) {
   ReconstructOptions options;  // 4x4 texels, 5 % margin: the root cube is 1.1 wide
   // Focal 1.45 x size at distance 3: a root texel covers 1.45 * size * 1.1 / 4 / 3 pixels.
-  EXPECT_EQ(LevelsForPhotos(RingOfSize(64), options), 5);    // 8.5 px: level 4 is 0.53 px
-  EXPECT_EQ(LevelsForPhotos(RingOfSize(512), options), 8);   // 68 px: level 7 is 0.53 px
+  EXPECT_EQ(LevelsForPhotos(RingOfSize(64), options), 5);   // 8.5 px: level 4 is 0.53 px
+  EXPECT_EQ(LevelsForPhotos(RingOfSize(512), options), 8);  // 68 px: level 7 is 0.53 px
   EXPECT_EQ(LevelsForPhotos(RingOfSize(1024), options), 9);
   options.texels = 8;
   EXPECT_EQ(LevelsForPhotos(RingOfSize(512), options), 7);

@@ -104,8 +104,9 @@ void WriteWorkspace(const fs::path& dir, const ReconstructInput& input) {
   }
   fs::create_directories(dir / "sparse");
   WriteColmapText(dir / "sparse", model);
-  WriteFileAtomic(dir / "scene.json",
-                  R"({"frame": "tree", "up": [0,0,1], "units": "metres", "bounds_min": [0,0,0], "bounds_max": [1,1,1], "source": "studio"})");
+  WriteFileAtomic(
+      dir / "scene.json",
+      R"({"frame": "tree", "up": [0,0,1], "units": "metres", "bounds_min": [0,0,0], "bounds_max": [1,1,1], "source": "studio"})");
 }
 
 TEST(BadInput, WorkspaceWithEmptyMattesWritesNothing) {
@@ -143,8 +144,8 @@ TEST(BadInput, MissingMatteNamesTheFile) {
 TEST(Workspace, CommandLineWritesAReadableVolumeAndRespectsForce) {
   testing::TempDir dir("cli");
   WriteWorkspace(dir.path, SmallInput());
-  const std::string command = std::string(VOLTREE_BINARY) + " reconstruct " + dir.path.string() +
-                              " --levels 4 --quiet --threads 2";
+  const std::string command =
+      std::string(VOLTREE_BINARY) + " reconstruct " + dir.path.string() + " --levels 4 --quiet --threads 2";
   ASSERT_EQ(std::system(command.c_str()), 0);
   const Volume volume = ReadVolume(dir.path / "volume");
   EXPECT_EQ(volume.levels.size(), 4u);

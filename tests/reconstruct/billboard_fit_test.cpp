@@ -91,8 +91,8 @@ struct Fixture {
       if (index % 8 != 1) continue;
       View v = view;
       const Eigen::Vector3d centre(0.5, 0.5, 0.5);
-      const Eigen::Vector3d eye = centre + Eigen::AngleAxisd(0.15, Eigen::Vector3d::UnitY()) *
-                                               (v.pose.Center() - centre);
+      const Eigen::Vector3d eye =
+          centre + Eigen::AngleAxisd(0.15, Eigen::Vector3d::UnitY()) * (v.pose.Center() - centre);
       v.pose = Pose::LookAt(eye, centre, Eigen::Vector3d::UnitZ());
       held_out.push_back(v);
       held_out_mattes.push_back(testing::PhantomMatte(scene, v));
@@ -134,23 +134,26 @@ TEST(BillboardFit, ReproducesTheInputViewsAndKeepsThePole) {
   }
   double held_before = 0, held_after = 0, pole_before = 0, pole_after = 0;
   for (size_t h = 0; h < f.held_out.size(); ++h) {
-    const ImageF a = CompositeLayers(RasterizeLevel(before, finest, f.held_out[h], NearestTwo(before, f.held_out[h]), 1.0),
-                                     TexelsAsFloat(before.levels[finest]));
-    const ImageF b = CompositeLayers(RasterizeLevel(after, finest, f.held_out[h], NearestTwo(after, f.held_out[h]), 1.0),
-                                     TexelsAsFloat(after.levels[finest]));
+    const ImageF a =
+        CompositeLayers(RasterizeLevel(before, finest, f.held_out[h], NearestTwo(before, f.held_out[h]), 1.0),
+                        TexelsAsFloat(before.levels[finest]));
+    const ImageF b =
+        CompositeLayers(RasterizeLevel(after, finest, f.held_out[h], NearestTwo(after, f.held_out[h]), 1.0),
+                        TexelsAsFloat(after.levels[finest]));
     held_before += AlphaPsnr(a, f.held_out_mattes[h]) / f.held_out.size();
     held_after += AlphaPsnr(b, f.held_out_mattes[h]) / f.held_out.size();
     pole_before += PoleRecall(a, f.held_out_mattes[h], f.held_out_poles[h]) / f.held_out.size();
     pole_after += PoleRecall(b, f.held_out_mattes[h], f.held_out_poles[h]) / f.held_out.size();
   }
-  std::printf("finest level alpha PSNR, input views: %.2f -> %.2f dB; held-out: %.2f -> %.2f dB; "
-              "held-out pole recall %.3f -> %.3f\n",
-              input_before, input_after, held_before, held_after, pole_before, pole_after);
+  std::printf(
+      "finest level alpha PSNR, input views: %.2f -> %.2f dB; held-out: %.2f -> %.2f dB; "
+      "held-out pole recall %.3f -> %.3f\n",
+      input_before, input_after, held_before, held_after, pole_before, pole_after);
   for (const BillboardFitLevel& l : stats.fit.levels)
     std::printf("  level %d (1/%.1f): alpha %.2f -> %.2f dB, RGB %.2f -> %.2f dB\n", l.level, l.scale,
                 l.alpha_psnr_before, l.alpha_psnr_after, l.rgb_psnr_before, l.rgb_psnr_after);
   EXPECT_GT(input_after, input_before + 6.0);  // measured +8.7 dB (33.11 -> 41.81)
-  EXPECT_GT(held_after, held_before);  // measured +0.46 dB (24.97 -> 25.43)
+  EXPECT_GT(held_after, held_before);          // measured +0.46 dB (24.97 -> 25.43)
   EXPECT_GE(pole_after, pole_before);
   EXPECT_GT(pole_after, 0.95);  // measured 0.988
 }

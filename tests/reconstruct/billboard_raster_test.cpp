@@ -34,8 +34,8 @@ Volume TwoCellsInDepth(const View& view, std::array<uint8_t, 4> near, std::array
   children.density = {1, 1};
   for (uint32_t c = 0; c < 2; ++c) {
     children.billboards.push_back({c, 0});
-    for (int t = 0; t < 4; ++t) children.texels.insert(children.texels.end(), (c == 0 ? near : far).begin(),
-                                                       (c == 0 ? near : far).end());
+    for (int t = 0; t < 4; ++t)
+      children.texels.insert(children.texels.end(), (c == 0 ? near : far).begin(), (c == 0 ? near : far).end());
   }
   volume.levels = {root, children};
   return volume;
@@ -67,8 +67,9 @@ TEST(BillboardRaster, BlendsTwoViewsWithTheirWeights) {
   volume.views.push_back(volume.views[0]);  // a second view with the same frame
   volume.levels[1].billboards = {{0, 0}, {0, 1}};
   volume.levels[1].texels.assign(2 * 4 * 4, 0);
-  for (int t = 0; t < 4; ++t) volume.levels[1].texels[t * 4 + 3] = 255, volume.levels[1].texels[16 + t * 4 + 1] = 255,
-                              volume.levels[1].texels[16 + t * 4 + 3] = 255;
+  for (int t = 0; t < 4; ++t)
+    volume.levels[1].texels[t * 4 + 3] = 255, volume.levels[1].texels[16 + t * 4 + 1] = 255,
+                                    volume.levels[1].texels[16 + t * 4 + 3] = 255;
   const ImageF image = CompositeLayers(RasterizeLevel(volume, 1, view, ViewBlend{0, 1, 0.75f, 0.25f}, 1.0),
                                        TexelsAsFloat(volume.levels[1]));
   EXPECT_NEAR(image.at(22, 40, 1), 0.25f, 1e-5);  // view 1's green at a quarter

@@ -63,7 +63,8 @@ TEST(Billboards, PruningNeverHidesAVisibleTexel) {
           const double alpha = a.texels[(i * n * n + row * n + col) * 4 + 3] / 255.0;
           if (alpha == 0) continue;
           const VolumeView& view = full.views[b.view];
-          const Eigen::Vector3d p = TexelCenter(view, full.CellCenter(level, a.cells[b.cell]), full.CellSize(level), n, row, col);
+          const Eigen::Vector3d p =
+              TexelCenter(view, full.CellCenter(level, a.cells[b.cell]), full.CellSize(level), n, row, col);
           const Ray ray{view.position, (p - view.position).normalized()};
           const double kept = testing::BillboardAlphaOnRay(pruned, level, b.cell, b.view, ray);
           if (kept > 0) continue;

@@ -21,9 +21,9 @@ inline std::vector<View> RingViews(int count, int size) {
   for (int i = 0; i < count; ++i) {
     const double azimuth = 2 * M_PI * i / count;
     const double elevation = (i % 2 ? 25.0 : -25.0) * M_PI / 180;
-    const Eigen::Vector3d eye = centre + 3.0 * Eigen::Vector3d(std::cos(azimuth) * std::cos(elevation),
-                                                               std::sin(azimuth) * std::cos(elevation),
-                                                               std::sin(elevation));
+    const Eigen::Vector3d eye =
+        centre + 3.0 * Eigen::Vector3d(std::cos(azimuth) * std::cos(elevation), std::sin(azimuth) * std::cos(elevation),
+                                       std::sin(elevation));
     View view;
     view.name = "view_" + std::to_string(1000 + i).substr(1) + ".png";
     const double focal = 1.45 * size;
@@ -126,7 +126,8 @@ namespace voltree::testing {
 struct TempDir {
   std::filesystem::path path;
   explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("voltree_reconstruct_" + name + "_" + std::to_string(::getpid()))) {
+      : path(std::filesystem::temp_directory_path() /
+             ("voltree_reconstruct_" + name + "_" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path);
     std::filesystem::create_directories(path);
   }

@@ -19,7 +19,8 @@ Volume SmallVolume() {
   v.size = 3.25;
   v.branching = 2;
   v.texels = 2;
-  v.views = {VolumeView{"a.png", {1, 2, 3}, {0, 0, 1}, {0, 1, 0}}, VolumeView{"b.png", {4, 5, 6}, {1, 0, 0}, {0, 0, 1}}};
+  v.views = {VolumeView{"a.png", {1, 2, 3}, {0, 0, 1}, {0, 1, 0}},
+             VolumeView{"b.png", {4, 5, 6}, {1, 0, 0}, {0, 0, 1}}};
   v.levels.resize(2);
   v.levels[0].resolution = 1;
   v.levels[0].cells = {{0, 0, 0}};
@@ -114,12 +115,13 @@ TEST(VolumeIo, ChecksCountsEvenWithAValidChecksum) {
   Volume volume = SmallVolume();
   std::string bytes = EncodeVolumeBinary(volume);
   bytes.resize(bytes.size() - 4);
-  const size_t cells_field = 8 + 4 * 5 + 4;  // magic, header, level 0 resolution
+  const size_t cells_field = 8 + 4 * 5 + 4;                                   // magic, header, level 0 resolution
   for (int i = 0; i < 8; ++i) bytes[cells_field + i] = char(i == 5 ? 1 : 0);  // 2^40, little-endian
   testing::TempDir dir("io_counts");
   WriteVolume(dir.path / "volume", volume);
   WriteFileAtomic(dir.path / "volume" / kVolumeBinName, WithCrc(bytes));
-  EXPECT_NE(ErrorOf(dir.path / "volume").find("exceed the file size"), std::string::npos) << ErrorOf(dir.path / "volume");
+  EXPECT_NE(ErrorOf(dir.path / "volume").find("exceed the file size"), std::string::npos)
+      << ErrorOf(dir.path / "volume");
 }
 
 TEST(VolumeIo, EndsWithTheCrc32OfEverythingBefore) {
@@ -151,7 +153,9 @@ TEST(VolumeIo, AnOlderVersionAsksToReconstructAgain) {
   WriteVersion1(folder);
   const std::string message = ErrorOf(folder);
   EXPECT_NE(message.find("volume.json: volume version 1 was written by an older voltree; run 'voltree reconstruct' "
-                         "again"), std::string::npos) << message;
+                         "again"),
+            std::string::npos)
+      << message;
 
   // volume.bin alone of version 1 says the same, not that its checksum is wrong.
   WriteFileAtomic(folder / kVolumeJsonName, VolumeJson(SmallVolume(), {}).dump(2));

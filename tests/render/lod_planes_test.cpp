@@ -26,7 +26,8 @@ std::vector<int> CoveringLevels(const OctreeIndex& index, const std::vector<uint
   for (uint32_t cell : cells) {
     const double half = 0.5 * index.CellSize(index.LevelOf(cell));
     for (uint32_t f = 0; f < covering.size(); ++f)
-      if ((index.Center(first + f) - index.Center(cell)).cwiseAbs().maxCoeff() < half) covering[f] = index.LevelOf(cell);
+      if ((index.Center(first + f) - index.Center(cell)).cwiseAbs().maxCoeff() < half)
+        covering[f] = index.LevelOf(cell);
   }
   return covering;
 }

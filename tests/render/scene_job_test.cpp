@@ -75,7 +75,7 @@ TEST(SceneJob, TurntableVideo) {
   RunRenderJob(options, nullptr);
   const std::string video = ReadFile(options.turntable);
   ASSERT_GT(video.size(), 100u);
-  EXPECT_EQ(video.substr(4, 4), "ftyp");  // an MP4
+  EXPECT_EQ(video.substr(4, 4), "ftyp");                // an MP4
   EXPECT_THROW(RunRenderJob(options, nullptr), Error);  // no overwrite without --force
   options.force = true;
   EXPECT_NO_THROW(RunRenderJob(options, nullptr));

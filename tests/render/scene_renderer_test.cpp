@@ -82,7 +82,8 @@ TEST(SceneRenderer, InstancesAppearWhereTheyProjectAndTheGroundHidesWhatIsBelowI
   // Control: without the ground the buried cube is seen there, and the background is transparent.
   SceneRenderer no_ground(ThreeTrees(false), assets);
   const Image8 bare = no_ground.Render(view, options);
-  if (std::getenv("VOLTREE_TEST_IMAGES")) WriteImage("/tmp/scene_bare.png", bare), WriteImage("/tmp/scene_ground.png", image);
+  if (std::getenv("VOLTREE_TEST_IMAGES"))
+    WriteImage("/tmp/scene_bare.png", bare), WriteImage("/tmp/scene_ground.png", image);
   EXPECT_TRUE(IsWhite(bare, pixel({-2.5, 14, -3})));
   EXPECT_EQ(bare.at(int(pixel({-3, 0, 0}).x()), int(pixel({-3, 0, 0}).y()), 3), 0);
   EXPECT_GT(stats.trees.billboards, 0u);

@@ -131,8 +131,8 @@ View LookingAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, int wi
 TEST(Frustum, CullsBehindAndBesideKeepsInFront) {
   const View view = LookingAt(Eigen::Vector3d(0, -20, 2), Eigen::Vector3d(0, 0, 2));  // looking along +Y
   const Frustum frustum(view);
-  EXPECT_TRUE(frustum.MayIntersect({Eigen::Vector3d(0, 0, 2), 1}));     // in front
-  EXPECT_FALSE(frustum.MayIntersect({Eigen::Vector3d(0, -40, 2), 1}));  // behind
+  EXPECT_TRUE(frustum.MayIntersect({Eigen::Vector3d(0, 0, 2), 1}));      // in front
+  EXPECT_FALSE(frustum.MayIntersect({Eigen::Vector3d(0, -40, 2), 1}));   // behind
   EXPECT_TRUE(frustum.MayIntersect({Eigen::Vector3d(0, -20.5, 2), 1}));  // contains the eye
   // Half-width of the view at 20 m: 20 * 160 / 300 = 10.7 m.
   EXPECT_FALSE(frustum.MayIntersect({Eigen::Vector3d(13, 0, 2), 1}));   // beside
@@ -184,8 +184,10 @@ TEST(SceneOrder, VisibleInstancesComeBackToFront) {
     ASSERT_EQ(filtered, order);
   }
   // An occluder on the ray to another sphere is drawn last.
-  const std::vector<Sphere> ray = {{Eigen::Vector3d(0, 5, 2), 1}, {Eigen::Vector3d(0, 30, 2), 1}, {Eigen::Vector3d(0, 15, 2), 1}};
-  const std::vector<size_t> order = VisibleBackToFront(ray, LookingAt(Eigen::Vector3d(0, -10, 2), Eigen::Vector3d(0, 0, 2)));
+  const std::vector<Sphere> ray = {
+      {Eigen::Vector3d(0, 5, 2), 1}, {Eigen::Vector3d(0, 30, 2), 1}, {Eigen::Vector3d(0, 15, 2), 1}};
+  const std::vector<size_t> order =
+      VisibleBackToFront(ray, LookingAt(Eigen::Vector3d(0, -10, 2), Eigen::Vector3d(0, 0, 2)));
   EXPECT_EQ(order, (std::vector<size_t>{1, 2, 0}));
 }
 

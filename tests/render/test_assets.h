@@ -30,9 +30,9 @@ inline VtreeAsset FullOctree(int levels) {
 }
 
 struct WhiteAssetOptions {
-  int views = 4;                   // evenly spaced on a circle of radius 5 about the trunk
-  double eye_height = 1.5;         // the views look at (0, 0, 1) from this height
-  bool every_fine_cell = false;    // level 1: all 8 cells, or only the two diagonal ones
+  int views = 4;                 // evenly spaced on a circle of radius 5 about the trunk
+  double eye_height = 1.5;       // the views look at (0, 0, 1) from this height
+  bool every_fine_cell = false;  // level 1: all 8 cells, or only the two diagonal ones
 };
 
 // Two levels over [-1,1]^2 x [0,2] whose billboards, one per cell and view, are opaque white

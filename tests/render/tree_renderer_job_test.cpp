@@ -54,8 +54,8 @@ TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
   EXPECT_EQ(first.channels, 4);
   int opaque = 0;
   for (size_t i = 3; i < first.pixels.size(); i += 4) opaque += first.pixels[i] == 255;
-  EXPECT_GT(opaque, 50);                              // the tree is in the picture...
-  EXPECT_EQ(first.at(0, 0, 3), 0);                    // ...on a transparent background
+  EXPECT_GT(opaque, 50);            // the tree is in the picture...
+  EXPECT_EQ(first.at(0, 0, 3), 0);  // ...on a transparent background
   EXPECT_TRUE(fs::exists(options.output / "frames.json"));
   EXPECT_THROW(RunRenderJob(options, nullptr), Error);  // exists, no force
   const std::string bytes = ReadFile(options.output / "frame_001.png");

@@ -31,8 +31,8 @@ TEST(TreeRendererPipeline, InputCamerasReproduceTheMattes) {
   const fs::path dir = fs::temp_directory_path() / ("voltree_render_pipeline_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const std::string b = VOLTREE_BINARY, d = dir.string();
-  ASSERT_EQ(std::system((b + " synth --tree oak --views 8 --size 96x96 --quiet -o " + d + " && " + b +
-                         " reconstruct " + d + " --levels 4 --quiet && " + b + " compress " + d + " --quiet")
+  ASSERT_EQ(std::system((b + " synth --tree oak --views 8 --size 96x96 --quiet -o " + d + " && " + b + " reconstruct " +
+                         d + " --levels 4 --quiet && " + b + " compress " + d + " --quiet")
                             .c_str()),
             0);
   const VtreeAsset asset = ReadAsset(dir / "tree.vtree");

@@ -21,7 +21,7 @@ std::array<uint8_t, 16> Dxt5Block(int opaque_rows) {
   for (int texel = opaque_rows * 4; texel < 16; ++texel) indices |= uint64_t(1) << (3 * texel);  // -> alpha1
   for (int i = 0; i < 6; ++i) block[2 + i] = uint8_t(indices >> (8 * i));
   block[8] = block[9] = block[10] = block[11] = 0xff;  // colour0 = colour1 = white (RGB565)
-  return block;                                          // colour indices 0
+  return block;                                        // colour indices 0
 }
 
 View MakeCamera(const Eigen::Vector3d& eye, int size) {
@@ -55,12 +55,14 @@ Scene MakeScene(int size) {
     asset.views.push_back({camera.name, eye, r.row(2).transpose(), -r.row(1).transpose()});
     scene.cameras.push_back(camera);
   }
-  const std::vector<std::array<uint16_t, 3>> finest = {{0, 0, 0}, {1, 2, 1}, {2, 1, 3}, {3, 3, 2}, {1, 1, 2}, {2, 2, 0}};
+  const std::vector<std::array<uint16_t, 3>> finest = {{0, 0, 0}, {1, 2, 1}, {2, 1, 3},
+                                                       {3, 3, 2}, {1, 1, 2}, {2, 2, 0}};
   asset.levels.resize(3);
   for (int l = 0; l < 3; ++l) {
     asset.levels[l].resolution = 1u << l;
     for (const auto& c : finest) {
-      const std::array<uint16_t, 3> cell = {uint16_t(c[0] >> (2 - l)), uint16_t(c[1] >> (2 - l)), uint16_t(c[2] >> (2 - l))};
+      const std::array<uint16_t, 3> cell = {uint16_t(c[0] >> (2 - l)), uint16_t(c[1] >> (2 - l)),
+                                            uint16_t(c[2] >> (2 - l))};
       if (std::find(asset.levels[l].cells.begin(), asset.levels[l].cells.end(), cell) == asset.levels[l].cells.end())
         asset.levels[l].cells.push_back(cell);
     }
@@ -161,7 +163,8 @@ TEST(TreeRenderer, BetweenTwoViewsBlendsBoth) {
   std::vector<std::array<uint32_t, 4>> records;
   const FrameStats stats = renderer.Plan(camera, {}, &records);
   EXPECT_NEAR(stats.views.first_weight, 0.5, 0.01);
-  EXPECT_TRUE((stats.views.first == 0 && stats.views.second == 1) || (stats.views.first == 1 && stats.views.second == 0));
+  EXPECT_TRUE((stats.views.first == 0 && stats.views.second == 1) ||
+              (stats.views.first == 1 && stats.views.second == 0));
   EXPECT_EQ(stats.billboards, 2 * stats.cells);
 }
 

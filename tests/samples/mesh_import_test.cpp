@@ -57,7 +57,8 @@ class GltfBuilder {
   }
   int AddIndices(const std::vector<uint16_t>& values) {
     const int view = AddView(std::string(reinterpret_cast<const char*>(values.data()), values.size() * 2));
-    doc_["accessors"].push_back({{"bufferView", view}, {"componentType", 5123}, {"count", values.size()}, {"type", "SCALAR"}});
+    doc_["accessors"].push_back(
+        {{"bufferView", view}, {"componentType", 5123}, {"count", values.size()}, {"type", "SCALAR"}});
     return int(doc_["accessors"].size()) - 1;
   }
   int AddMesh(json primitive) {
@@ -71,8 +72,8 @@ class GltfBuilder {
 
   std::string Gltf() const {
     json doc = doc_;
-    doc["buffers"] = json::array({{{"byteLength", bin_.size()},
-                                   {"uri", "data:application/octet-stream;base64," + Base64(bin_)}}});
+    doc["buffers"] =
+        json::array({{{"byteLength", bin_.size()}, {"uri", "data:application/octet-stream;base64," + Base64(bin_)}}});
     return doc.dump();
   }
   std::string Glb() const {
@@ -103,8 +104,8 @@ class GltfBuilder {
 // A 4x2 leaf texture with every kind of alpha, so straight (not premultiplied) storage shows.
 Image8 LeafTexture() {
   Image8 image(4, 2, 4);
-  const uint8_t texels[8][4] = {{200, 100, 50, 255}, {10, 220, 30, 128}, {0, 0, 0, 0},   {90, 180, 40, 1},
-                                {255, 255, 255, 255}, {40, 80, 160, 64}, {5, 6, 7, 200}, {30, 200, 60, 0}};
+  const uint8_t texels[8][4] = {{200, 100, 50, 255},  {10, 220, 30, 128}, {0, 0, 0, 0},   {90, 180, 40, 1},
+                                {255, 255, 255, 255}, {40, 80, 160, 64},  {5, 6, 7, 200}, {30, 200, 60, 0}};
   for (int i = 0; i < 8; ++i) std::memcpy(&image.pixels[size_t(i) * 4], texels[i], 4);
   return image;
 }
@@ -120,9 +121,7 @@ std::string PalettePngWithTrns() {
     }
     return crc ^ 0xFFFFFFFFu;
   };
-  auto big_endian = [](uint32_t v) {
-    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-  };
+  auto big_endian = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
   auto chunk = [&](const std::string& type, const std::string& data) {
     return big_endian(uint32_t(data.size())) + type + data + big_endian(crc32(type + data));
   };
@@ -130,12 +129,13 @@ std::string PalettePngWithTrns() {
   const std::string palette{char(200), 100, 50, 10, char(220), 30};
   const std::string transparency{char(255), 0};
   const std::string scanline{0, 0, 1};  // filter 0, entries 0 and 1
-  uint32_t a = 1, b = 0;  // Adler-32 of the raw scanline
+  uint32_t a = 1, b = 0;                // Adler-32 of the raw scanline
   for (unsigned char byte : scanline) {
     a = (a + byte) % 65521;
     b = (b + a) % 65521;
   }
-  const std::string zlib = std::string{0x78, 0x01, 0x01, 3, 0, char(0xFC), char(0xFF)} + scanline + big_endian((b << 16) | a);
+  const std::string zlib =
+      std::string{0x78, 0x01, 0x01, 3, 0, char(0xFC), char(0xFF)} + scanline + big_endian((b << 16) | a);
   return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) + chunk("PLTE", palette) +
          chunk("tRNS", transparency) + chunk("IDAT", zlib) + chunk("IEND", "");
 }
@@ -143,8 +143,8 @@ std::string PalettePngWithTrns() {
 class MeshImportTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           Str("voltree_mesh_import_", ::getpid(), "_", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / Str("voltree_mesh_import_", ::getpid(), "_",
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -201,8 +201,8 @@ GltfBuilder NestedScene() {
   const int ground_node = gltf.AddNode({{"mesh", ground_mesh}});
   const int child = gltf.AddNode({{"mesh", unit_mesh}, {"rotation", {0, 0, s, s}}, {"scale", {2, 2, 2}}});
   const int parent = gltf.AddNode({{"translation", {0, 10, 0}}, {"children", {child}}});
-  const int matrix_node = gltf.AddNode(
-      {{"mesh", unit_mesh}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 3, 0, 1}}});
+  const int matrix_node =
+      gltf.AddNode({{"mesh", unit_mesh}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 3, 0, 1}}});
   gltf.doc()["scenes"] = json::array({{{"nodes", {ground_node, parent, matrix_node}}}});
   gltf.doc()["scene"] = 0;
   return gltf;
@@ -270,14 +270,15 @@ TEST_F(MeshImportTest, GlbMaterialsAlphaModesAndEmbeddedTexture) {
   const int image_view = gltf.AddView(ReadFile(dir_ / "leaf_source.png"));
   gltf.doc()["images"] = json::array({{{"bufferView", image_view}, {"mimeType", "image/png"}}});
   gltf.doc()["textures"] = json::array({{{"source", 0}}});
-  gltf.doc()["materials"] = json::array(
-      {{{"name", "leaf"},
-        {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
-        {"alphaMode", "MASK"},
-        {"alphaCutoff", 0.25},
-        {"doubleSided", true}},
-       {{"name", "glass"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.2, 1.0, 0.4}}}}, {"alphaMode", "BLEND"}},
-       {{"name", "bark"}}});
+  gltf.doc()["materials"] = json::array({{{"name", "leaf"},
+                                          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                                          {"alphaMode", "MASK"},
+                                          {"alphaCutoff", 0.25},
+                                          {"doubleSided", true}},
+                                         {{"name", "glass"},
+                                          {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.2, 1.0, 0.4}}}},
+                                          {"alphaMode", "BLEND"}},
+                                         {{"name", "bark"}}});
   json primitives = json::array();
   for (int m = 0; m < 3; ++m)
     primitives.push_back({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", m}});
@@ -311,18 +312,18 @@ TEST_F(MeshImportTest, GltfDataUriImageAndMissingExternalImage) {
   WriteImage(dir_ / "leaf_source.png", LeafTexture());
   GltfBuilder gltf;
   const int positions = gltf.AddFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3);
-  gltf.doc()["images"] = json::array(
-      {{{"uri", "data:image/png;base64," + Base64(ReadFile(dir_ / "leaf_source.png"))}},
-       {{"uri", "missing%20leaf.png"}},
-       {{"uri", "leaf%20source.png"}}});
+  gltf.doc()["images"] = json::array({{{"uri", "data:image/png;base64," + Base64(ReadFile(dir_ / "leaf_source.png"))}},
+                                      {{"uri", "missing%20leaf.png"}},
+                                      {{"uri", "leaf%20source.png"}}});
   fs::rename(dir_ / "leaf_source.png", dir_ / "leaf source.png");  // external, percent-encoded name
   gltf.doc()["textures"] = json::array({{{"source", 0}}, {{"source", 1}}, {{"source", 2}}});
   gltf.doc()["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
                                          {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}},
                                          {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 2}}}}}}});
-  gltf.doc()["meshes"] = json::array({{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"material", 0}},
-                                                       {{"attributes", {{"POSITION", positions}}}, {"material", 1}},
-                                                       {{"attributes", {{"POSITION", positions}}}, {"material", 2}}}}}});
+  gltf.doc()["meshes"] = json::array({{{"primitives",
+                                        {{{"attributes", {{"POSITION", positions}}}, {"material", 0}},
+                                         {{"attributes", {{"POSITION", positions}}}, {"material", 1}},
+                                         {{"attributes", {{"POSITION", positions}}}, {"material", 2}}}}}});
   gltf.AddNode({{"mesh", 0}});
   const fs::path path = Write("tree.gltf", gltf.Gltf());
   const TreeMesh mesh = Import(path);

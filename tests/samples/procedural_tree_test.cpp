@@ -113,7 +113,7 @@ TEST(ProceduralTree, NormalizedFrameAndPlausibleSize) {
       const TreeMesh& mesh = Tree(expected.preset, seed);
       const auto [lo, hi] = mesh.Bounds();
       const std::string label = Str(TreePresetName(expected.preset), " seed ", seed);
-      EXPECT_GE(lo.z(), 0.0f) << label;  // nothing below the ground
+      EXPECT_GE(lo.z(), 0.0f) << label;   // nothing below the ground
       EXPECT_LT(lo.z(), 0.01f) << label;  // the trunk stands on it
       EXPECT_GE(hi.z(), expected.min_height) << label;
       EXPECT_LE(hi.z(), expected.max_height) << label;

@@ -54,7 +54,8 @@ TEST_F(SynthCommand, ExistingFolderNeedsForce) {
   const fs::path out = root_ / "out";
   fs::create_directories(out);
   WriteFileAtomic(out / "mine.txt", "keep");
-  const RunResult result = RunVoltree("synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o " + out.string());
+  const RunResult result =
+      RunVoltree("synth --tree young-oak --views 1 --rings 1 --held-out 0 --size 32x32 -o " + out.string());
   EXPECT_NE(result.status, 0);
   EXPECT_NE(result.output.find("--force"), std::string::npos) << result.output;
   EXPECT_EQ(ReadFile(out / "mine.txt"), "keep");
@@ -73,8 +74,10 @@ TEST_F(SynthCommand, BadSizeAndMissingMeshFail) {
 
 TEST_F(SynthCommand, SmallRunWritesAWorkspace) {
   const fs::path out = root_ / "out";
-  const RunResult result = RunVoltree("synth --tree young-oak --views 2 --rings 1 --held-out 1 --size 48x40 "
-                               "--supersample 2 --quiet -o " + out.string());
+  const RunResult result = RunVoltree(
+      "synth --tree young-oak --views 2 --rings 1 --held-out 1 --size 48x40 "
+      "--supersample 2 --quiet -o " +
+      out.string());
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_TRUE(result.output.empty()) << result.output;  // --quiet
   EXPECT_TRUE(fs::exists(out / "images/view_001.png"));

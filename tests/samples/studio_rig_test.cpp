@@ -43,8 +43,8 @@ TEST(StudioRig, EveryCameraSeesTheWholeTree) {
           EXPECT_GT(pixel.y(), 0);
           EXPECT_LT(pixel.x(), options.width);
           EXPECT_LT(pixel.y(), options.height);
-          nearest_edge = std::min({nearest_edge, pixel.x(), pixel.y(), options.width - pixel.x(),
-                                   options.height - pixel.y()});
+          nearest_edge =
+              std::min({nearest_edge, pixel.x(), pixel.y(), options.width - pixel.x(), options.height - pixel.y()});
         }
       }
     // The framing is tight: some corner comes within 12% of the frame's half height of an edge.

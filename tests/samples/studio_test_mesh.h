@@ -72,8 +72,8 @@ inline TreeMesh MakeToyTree() {
     const float angle = 2.39996f * i, radius = 0.15f + 0.55f * ((i * 37) % 40) / 40.0f;
     const Eigen::Vector3f center(radius * std::cos(angle), radius * std::sin(angle), 1.1f + 0.02f * i);
     const Eigen::Vector3f right = Eigen::Vector3f(-std::sin(angle), std::cos(angle), 0.0f) * 0.15f;
-    const Eigen::Vector3f up = Eigen::Vector3f(0.3f * std::cos(angle), 0.3f * std::sin(angle), 1.0f).normalized() *
-                               (0.15f + 0.05f * (i % 3));
+    const Eigen::Vector3f up =
+        Eigen::Vector3f(0.3f * std::cos(angle), 0.3f * std::sin(angle), 1.0f).normalized() * (0.15f + 0.05f * (i % 3));
     const Eigen::Vector3f normal = right.cross(up).normalized();
     const uint32_t first = static_cast<uint32_t>(mesh.vertices.size());
     for (int corner = 0; corner < 4; ++corner) {
