@@ -24,13 +24,14 @@ void AddEvalCommand(CLI::App& app) {
       "view, with the asset's web page beside the truth, plots drawn by gnuplot when installed) and REPORT/eval/; "
       "prints a table and the page's path");
   struct Arguments {
+    std::filesystem::path dir;
     EvaluateOptions options;
     bool quiet = false;
   };
   auto args = std::make_shared<Arguments>();
   EvaluateOptions& o = args->options;
   command
-      ->add_option("DIR", o.workspace,
+      ->add_option("DIR", args->dir,
                    "Capture workspace (sparse/, foreground/ or images/+mattes/, truth/, tree.vtree)")
       ->required();
   AddOption(*command, "--asset", o.asset);
@@ -44,7 +45,7 @@ void AddEvalCommand(CLI::App& app) {
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     Progress progress(args->quiet);
-    const EvaluateResult result = EvaluateWorkspace(args->options, progress);
+    const EvaluateResult result = EvaluateWorkspace(args->dir, args->options, progress);
     PrintEvaluation(result);
     if (!result.budget.empty()) std::printf("\nerror budget\n%s", BudgetTable(result.budget).c_str());
   });

@@ -119,11 +119,10 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   if (options.evaluate)
     timed("eval", [&] {
       EvaluateOptions evaluation = options.evaluation;
-      evaluation.workspace = workspace;
       evaluation.asset.clear();
       evaluation.report.clear();
       evaluation.workspace_label = options.output.string();
-      const EvaluateResult evaluated = EvaluateWorkspace(evaluation, progress);
+      const EvaluateResult evaluated = EvaluateWorkspace(workspace, evaluation, progress);
       summary["evaluation"] = {{"held_out", Headline(evaluated.table.Overall(ViewSet::kHeldOut))},
                                {"input", Headline(evaluated.table.Overall(ViewSet::kInput))},
                                {"render_seconds", evaluated.render_seconds},

@@ -58,8 +58,7 @@ struct EvaluationTruth {
   std::vector<std::string> notes;
 };
 
-EvaluationTruth GatherTruth(const EvaluateOptions& options) {
-  const fs::path& workspace = options.workspace;
+EvaluationTruth GatherTruth(const fs::path& workspace, const EvaluateOptions& options) {
   EvaluationTruth truth;
   truth.alignment = AlignTruthToWorkspace(workspace);
   truth.held_out = HeldOutTruth(workspace);
@@ -104,10 +103,10 @@ EvaluationRenderSettings RenderSettings(const EvaluateOptions& options, const Vt
 }
 
 // What is known before anything is rendered.
-EvaluationReport StartReport(const EvaluateOptions& options, const EvaluationTruth& truth, EvaluatedAsset asset,
-                             std::string renderer) {
+EvaluationReport StartReport(const fs::path& workspace, const EvaluateOptions& options, const EvaluationTruth& truth,
+                             EvaluatedAsset asset, std::string renderer) {
   EvaluationReport report;
-  report.workspace = options.workspace_label.empty() ? options.workspace.string() : options.workspace_label;
+  report.workspace = options.workspace_label.empty() ? workspace.string() : options.workspace_label;
   report.asset = std::move(asset);
   report.renderer = std::move(renderer);
   report.metrics = options.metrics;
@@ -167,12 +166,14 @@ void LinkWebPage(const std::vector<TruthView>& held_out, double grey, std::vecto
 
 }  // namespace
 
-fs::path EvaluateOptions::AssetPath() const { return asset.empty() ? workspace / "tree.vtree" : asset; }
-fs::path EvaluateOptions::ReportPath() const { return report.empty() ? workspace / "report" : report; }
+fs::path EvaluateOptions::AssetPath(const fs::path& workspace) const {
+  return asset.empty() ? workspace / "tree.vtree" : asset;
+}
+fs::path EvaluateOptions::ReportPath(const fs::path& workspace) const {
+  return report.empty() ? workspace / "report" : report;
+}
 
 void EvaluateOptions::Check() const {
-  if (workspace.empty()) Fail("eval: the workspace folder is empty");
-  if (!fs::is_directory(workspace)) Fail(workspace.string(), ": no such workspace folder");
   metrics.Check();
   lod.Check();
   if (lod.forced_level >= 0)
@@ -180,22 +181,24 @@ void EvaluateOptions::Check() const {
   if (!(difference_gain > 0)) Fail("eval: difference_gain = ", difference_gain, ", expected > 0");
 }
 
-EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progress) {
+EvaluateResult EvaluateWorkspace(const fs::path& workspace, const EvaluateOptions& options, Progress& progress) {
+  if (workspace.empty()) Fail("eval: the workspace folder is empty");
+  if (!fs::is_directory(workspace)) Fail(workspace.string(), ": no such workspace folder");
   options.Check();
   const double start = progress.ElapsedSeconds();
-  const fs::path folder = options.ReportPath(), asset_path = options.AssetPath(), workspace = options.workspace;
+  const fs::path folder = options.ReportPath(workspace), asset_path = options.AssetPath(workspace);
   // Refuse at once, before any slow work.
   CheckCanWriteReport(folder, options.force);
   if (!fs::exists(asset_path))
     Fail(asset_path.string(), ": no asset (run 'voltree compress ", workspace.string(), "' first, or pass --asset)");
 
-  const EvaluationTruth truth = GatherTruth(options);
+  const EvaluationTruth truth = GatherTruth(workspace, options);
   const std::vector<TruthView> held_out = truth.held_out.value_or(std::vector<TruthView>{});
   const VtreeAsset asset = ReadAsset(asset_path);
   GlContext context;
   TreeRenderer renderer(asset);
   EvaluationReport report =
-      StartReport(options, truth, DescribeAsset(asset, asset_path, workspace), context.renderer());
+      StartReport(workspace, options, truth, DescribeAsset(asset, asset_path, workspace), context.renderer());
 
   CreatedFolder report_folder(folder);
   StagedDirectory staged(folder / kEvalFolderName, /*force=*/true);  // ownership checked above

@@ -23,7 +23,6 @@
 namespace voltree {
 
 struct EvaluateOptions {
-  std::filesystem::path workspace;
   std::filesystem::path asset;   // empty: WORKSPACE/tree.vtree
   std::filesystem::path report;  // empty: WORKSPACE/report
   // Fixed grey (8-bit units) that truth and render are composited over for the RGB metrics, the
@@ -46,8 +45,8 @@ struct EvaluateOptions {
   std::string workspace_label;
   bool force = false;  // replace metrics.json / index.html / eval/ not written by eval
 
-  std::filesystem::path AssetPath() const;
-  std::filesystem::path ReportPath() const;
+  std::filesystem::path AssetPath(const std::filesystem::path& workspace) const;
+  std::filesystem::path ReportPath(const std::filesystem::path& workspace) const;
   void Check() const;  // throws Error naming the bad field
 };
 
@@ -63,6 +62,8 @@ struct EvaluateResult {
   double seconds = 0;              // the whole evaluation
 };
 
-EvaluateResult EvaluateWorkspace(const EvaluateOptions& options, Progress& progress);
+// Renders WORKSPACE's asset at its truth and input cameras, compares, and writes the report.
+EvaluateResult EvaluateWorkspace(const std::filesystem::path& workspace, const EvaluateOptions& options,
+                                 Progress& progress);
 
 }  // namespace voltree

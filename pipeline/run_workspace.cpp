@@ -210,11 +210,10 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
   });
   stage("eval", true, "", [&] {
     EvaluateOptions evaluate = options.evaluate;
-    evaluate.workspace = dir;
     evaluate.asset = result.asset;
     evaluate.report = report;
     evaluate.force = evaluate.force || options.force;
-    result.evaluation = EvaluateWorkspace(evaluate, progress);
+    result.evaluation = EvaluateWorkspace(dir, evaluate, progress);
   });
   return result;
 }
