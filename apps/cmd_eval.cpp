@@ -31,8 +31,7 @@ void AddEvalCommand(CLI::App& app) {
   auto args = std::make_shared<Arguments>();
   EvaluateOptions& o = args->options;
   command
-      ->add_option("DIR", args->dir,
-                   "Capture workspace (sparse/, foreground/ or images/+mattes/, truth/, tree.vtree)")
+      ->add_option("DIR", args->dir, "Capture workspace (sparse/, foreground/ or images/+mattes/, truth/, tree.vtree)")
       ->required();
   AddOption(*command, "--asset", o.asset);
   AddOption(*command, "--report", o.report);
