@@ -7,23 +7,15 @@
 #include "compress/dxt5.h"
 #include "compress/texture_psnr.h"
 #include "core/error.h"
+#include "core/volume_io.h"
 
 namespace voltree {
 namespace {
 
-void CheckVolume(const Volume& volume) {
+// What compression needs beyond a well-formed volume (core/volume_io.h): something to compress.
+void CheckCompressible(const Volume& volume) {
+  CheckVolume(volume, "volume");
   if (volume.levels.empty()) Fail("volume: no levels");
-  if (volume.texels < 1 || volume.texels > 64) Fail("volume: texels = ", volume.texels, ", expected 1..64");
-  if (volume.views.size() > 65535) Fail("volume: ", volume.views.size(), " views, at most 65535 supported");
-  for (size_t l = 0; l < volume.levels.size(); ++l) {
-    const auto& level = volume.levels[l];
-    if (level.density.size() != level.cells.size())
-      Fail("volume level ", l, ": ", level.density.size(), " densities for ", level.cells.size(), " cells");
-    for (const auto& b : level.billboards) {
-      if (b.cell >= level.cells.size()) Fail("volume level ", l, ": billboard cell ", b.cell, " out of range");
-      if (b.view >= volume.views.size()) Fail("volume level ", l, ": billboard view ", b.view, " out of range");
-    }
-  }
   if (CountBillboards(volume) == 0) Fail("volume: no billboards to compress (everything was pruned?)");
 }
 
@@ -109,7 +101,7 @@ std::vector<uint8_t> DecodeBillboardsFromAtlas(const VtreeAsset& asset) {
 
 CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress) {
   options.Check();
-  CheckVolume(volume);
+  CheckCompressible(volume);
   const int texel_count = volume.texels * volume.texels;
   const std::vector<uint8_t> texels = GatherTexels(volume);
   CompressResult result;

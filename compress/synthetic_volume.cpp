@@ -1,6 +1,7 @@
 #include "compress/synthetic_volume.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -89,7 +90,9 @@ Volume MakeSyntheticVolume(const SyntheticVolumeOptions& options) {
       level.cells.push_back({uint16_t(index % r), uint16_t(index / r % r), uint16_t(index / (r * r))});
       level.density.push_back(float(Range(rng, 0.1, 5)));
     }
-    std::sort(level.cells.begin(), level.cells.end());
+    // Sorted by (z, y, x), as the volume's contract asks (core/volume.h).
+    const auto zyx = [](const std::array<uint16_t, 3>& c) { return std::array{c[2], c[1], c[0]}; };
+    std::sort(level.cells.begin(), level.cells.end(), [&](const auto& a, const auto& b) { return zyx(a) < zyx(b); });
     level.cells.erase(std::unique(level.cells.begin(), level.cells.end()), level.cells.end());
     level.density.resize(level.cells.size());
     for (uint32_t c = 0; c < level.cells.size() && int(level.billboards.size()) < wanted; ++c)

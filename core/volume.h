@@ -18,10 +18,11 @@ struct Billboard {
 };
 
 struct VolumeLevel {
-  int resolution = 1;                          // cells per axis at this level: branching^level
-  std::vector<std::array<uint16_t, 3>> cells;  // integer cell coordinates, kept (uncarved) cells only
-  std::vector<float> density;                  // sigma per cell, per unit length of the tree frame
-  std::vector<Billboard> billboards;           // kept after pruning, sorted by (cell, view)
+  int resolution = 1;  // cells per axis at this level: branching^level
+  std::vector<std::array<uint16_t, 3>>
+      cells;                          // integer cell coordinates, kept (uncarved) cells only, sorted by (z, y, x)
+  std::vector<float> density;         // sigma per cell, per unit length of the tree frame
+  std::vector<Billboard> billboards;  // kept after pruning, sorted by (cell, view)
   // billboards.size() * texels * texels RGBA8 texels: sRGB, premultiplied alpha, row-major with
   // texel (0,0) at the billboard's top-left as seen from its view.
   std::vector<uint8_t> texels;
