@@ -211,6 +211,53 @@ void DrawPanel(const ViewerOptions& options, const Session& session, const Panel
   ImGui::End();
 }
 
+// A window with an OpenGL 4.3 core context, current; after glfwInit.
+GLFWwindow* OpenWindow(const ViewerOptions& options) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_RESIZABLE, options.script.empty() ? GLFW_TRUE : GLFW_FALSE);
+  GLFWwindow* window = glfwCreateWindow(
+      options.width, options.height, ("voltree view: " + options.input.filename().string()).c_str(), nullptr, nullptr);
+  if (!window)
+    Fail("view: this display gives no OpenGL 4.3 core profile context (", g_glfw_error,
+         "), which the renderer needs; 'voltree render' draws headless through EGL instead");
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(options.script.empty() ? 1 : 0);  // a script runs as fast as it can
+  return window;
+}
+
+// The window's framebuffer cleared to the (straight) background, premultiplied as the renderer draws.
+void ClearWindow(int width, int height, const std::array<float, 4>& background) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  const auto& bg = background;
+  glClearColor(bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]);
+  glClearDepth(1);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// One frame of the tree or the scene at `camera`, and what the panel shows of it.
+PanelStats Draw(Drawing& drawing, const View& camera, const TreeRenderOptions& render) {
+  if (drawing.scene_renderer) {
+    const SceneFrameStats frame = drawing.scene_renderer->Draw(camera, {render});
+    return {frame.frame_ms,        frame.trees.cells,      frame.trees.billboards,
+            frame.instances_drawn, frame.instances_culled, frame.trees.min_level,
+            frame.trees.max_level, frame.trees.views,      frame.trees.cells_per_level};
+  }
+  const FrameStats frame = drawing.tree->Draw(camera, render);
+  return {frame.frame_ms,  frame.cells, frame.billboards,     1, 0, frame.min_level,
+          frame.max_level, frame.views, frame.cells_per_level};
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 void ViewerOptions::Check() const {
@@ -244,18 +291,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   struct Terminate {
     ~Terminate() { glfwTerminate(); }
   } terminate;
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_RESIZABLE, options.script.empty() ? GLFW_TRUE : GLFW_FALSE);
-  GLFWwindow* window = glfwCreateWindow(
-      options.width, options.height, ("voltree view: " + options.input.filename().string()).c_str(), nullptr, nullptr);
-  if (!window)
-    Fail("view: this display gives no OpenGL 4.3 core profile context (", g_glfw_error,
-         "), which the renderer needs; 'voltree render' draws headless through EGL instead");
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(options.script.empty() ? 1 : 0);
+  GLFWwindow* window = OpenWindow(options);
 
   ViewerResult result;
   result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -291,26 +327,9 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     glfwGetFramebufferSize(window, &width, &height);
     if (width < 1 || height < 1) continue;  // minimized
     const View camera = session.orbit.Camera(width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
-    const auto& bg = options.background;
-    glClearColor(bg[0] * bg[3], bg[1] * bg[3], bg[2] * bg[3], bg[3]);
-    glClearDepth(1);
-    glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    GpuMemory gpu;
-    if (drawing.scene_renderer) {
-      const SceneFrameStats frame = drawing.scene_renderer->Draw(camera, {session.render});
-      stats = {frame.frame_ms,        frame.trees.cells,      frame.trees.billboards,
-               frame.instances_drawn, frame.instances_culled, frame.trees.min_level,
-               frame.trees.max_level, frame.trees.views,      frame.trees.cells_per_level};
-      gpu = drawing.scene_renderer->GpuBytes();
-    } else {
-      const FrameStats frame = drawing.tree->Draw(camera, session.render);
-      stats = {frame.frame_ms,  frame.cells, frame.billboards,     1, 0, frame.min_level,
-               frame.max_level, frame.views, frame.cells_per_level};
-      gpu = drawing.tree->GpuBytes();
-    }
+    ClearWindow(width, height, options.background);
+    stats = Draw(drawing, camera, session.render);
+    const GpuMemory gpu = drawing.scene_renderer ? drawing.scene_renderer->GpuBytes() : drawing.tree->GpuBytes();
     CheckGl("view: drawing");
     if (session.screenshot_requested) {  // the frame as drawn, before the panel goes over it
       session.screenshot_requested = false;
@@ -336,10 +355,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   drawing.tree.reset();
   drawing.scene_renderer.reset();
   glfwDestroyWindow(window);
-  if (!frame_ms.empty()) {
-    std::nth_element(frame_ms.begin(), frame_ms.begin() + frame_ms.size() / 2, frame_ms.end());
-    result.median_ms = frame_ms[frame_ms.size() / 2];
-  }
+  result.median_ms = Median(std::move(frame_ms));
   return result;
 }
 
