@@ -9,6 +9,7 @@
 // --min-elevation 20. Measured here: 16/16 registered, rotation 0.12 deg mean / 0.23 max, centre
 // 0.21 % mean / 0.56 % max of the camera distance; 28 s on the loaded 2-core machine.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -45,8 +46,10 @@ Eigen::Vector3d JsonVector(const nlohmann::json& value) {
 
 TEST(CalibrateEndToEnd, FindsTheStudioCameras) {
   if (!HaveColmap()) GTEST_SKIP() << "colmap is not on PATH";
-  const fs::path dir = fs::path(::testing::TempDir()) / "voltree_calibrate_e2e";
-  const fs::path truth = fs::path(::testing::TempDir()) / "voltree_calibrate_e2e_truth";
+  // Named after the process, so that two copies of the suite running at once do not share it.
+  const std::string name = "voltree_calibrate_e2e_" + std::to_string(::getpid());
+  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path truth = fs::path(::testing::TempDir()) / (name + "_truth");
   fs::remove_all(dir);
   fs::remove_all(truth);
   const std::string binary = VOLTREE_BINARY;
