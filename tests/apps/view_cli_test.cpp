@@ -24,9 +24,12 @@ namespace fs = std::filesystem;
 constexpr double kMinPsnr = 35;
 
 // xvfb-run with a display number of this process's own: `-a` alone picks the first free number,
-// and two tests starting at once (ctest -j) can both pick it.
-std::string XvfbRun() {
-  return "timeout 120 xvfb-run -a -n " + std::to_string(100 + ::getpid() % 800) + " -s '-screen 0 640x480x24' ";
+// and two tests starting at once (ctest -j) can both pick it. The X authority file is ours too:
+// the temporary folder xvfb-run makes for it otherwise sometimes fails to be removed on a loaded
+// machine, and xvfb-run then exits 5 whatever the command returned.
+std::string XvfbRun(const fs::path& dir) {
+  return "timeout 120 xvfb-run -a -n " + std::to_string(100 + ::getpid() % 800) + " -f '" +
+         (dir / "xauthority").string() + "' -s '-screen 0 640x480x24' ";
 }
 
 class ViewWindow : public test::TinyAssetSuite {
@@ -39,7 +42,7 @@ class ViewWindow : public test::TinyAssetSuite {
     WriteFileAtomic(Dir() / (name + ".txt"), script);
     return test::VoltreeCaptured("view '" + input + "' --size 256x256 --script '" + (Dir() / (name + ".txt")).string() +
                                      "' -o '" + (Dir() / name).string() + "'",
-                                 "", XvfbRun());
+                                 "", XvfbRun(Dir()));
   }
 
   // `voltree render` from a screenshot's saved camera, over the viewer's grey.
@@ -122,7 +125,7 @@ TEST_F(ViewWindow, WithoutADisplayNamesRender) {
 // Mesa told to offer OpenGL 3.3 stands for an old driver: the message says what is needed.
 TEST_F(ViewWindow, TooOldOpenGlIsNamed) {
   const test::Outcome outcome =
-      test::VoltreeCaptured("view '" + Asset().string() + "'", "", "MESA_GL_VERSION_OVERRIDE=3.3 " + XvfbRun());
+      test::VoltreeCaptured("view '" + Asset().string() + "'", "", "MESA_GL_VERSION_OVERRIDE=3.3 " + XvfbRun(Dir()));
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("no OpenGL 4.3 core profile"), std::string::npos) << outcome.output;
   EXPECT_NE(outcome.output.find("voltree render"), std::string::npos) << outcome.output;
