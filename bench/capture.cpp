@@ -17,6 +17,7 @@
 #include "capture/calibrate_accuracy.h"
 #include "capture/colmap_binary.h"
 #include "capture/matte.h"
+#include "capture/photo_folder.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
 #include "core/image.h"
@@ -76,7 +77,7 @@ double StageSeconds(const RunResult& result, const std::string& stage) {
 void PrintRow(const std::string& tree, const std::string& backdrop, const std::string& input, const fs::path& dir,
               const fs::path& truth, const RunResult* result, const std::string& stopped) {
   std::string registered = "-", cameras = "-";
-  const std::vector<std::string> photos = ListImages(dir / "images");
+  const std::vector<std::string> photos = PhotoNames(FindPhotos(dir / "images"));
   if (fs::exists(dir / "sparse") && input == "photos") {
     const std::vector<View> estimated = ReadColmapModel(dir / "sparse").Views();
     // Per ring: the studio names ring 0's photos first (view_000 ... view_{n/2-1}).

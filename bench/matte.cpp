@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "capture/matte.h"
+#include "capture/photo_folder.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 #include "capture/calibrate_colmap.h"
 #include "capture/colmap_binary.h"
+#include "capture/colmap_database.h"
 #include "capture/normalize.h"
+#include "capture/photo_folder.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
@@ -43,21 +46,6 @@ void CalibrateOptions::Check() const {
   if (!import_model.empty() && !known_cameras.empty())
     FailOption("CalibrateOptions.import_model", "and --known-cameras exclude each other");
   hull.Check();
-}
-
-std::vector<std::string> ListImages(const fs::path& folder) {
-  if (!fs::is_directory(folder)) Fail(folder.string(), ": no such folder (expected the photos in DIR/images/)");
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
-    std::string extension = entry.path().extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    for (const char* known : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp"})
-      if (extension == known) names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 double MeanReprojectionError(const ColmapModel& model) {
@@ -156,6 +144,29 @@ Bounds FindBounds(const fs::path& workspace, const ColmapModel& model, const Hul
   return bounds;
 }
 
+// One line per photo that did not register, with the reason COLMAP's database gives when there is
+// one (features found, matches verified); the first 20 photos.
+std::string DescribeUnregistered(const std::vector<std::string>& names, const fs::path& database,
+                                 const CalibrateOptions& options) {
+  std::map<std::string, PhotoMatches> matches;
+  if (!database.empty() && fs::is_regular_file(database)) try {
+      for (PhotoMatches& photo : ReadPhotoMatches(database)) matches[photo.name] = std::move(photo);
+    } catch (const Error& error) {  // the names still help without the reasons
+      return Str("  ", names.size(), " photos (", error.what(), ")");
+    }
+  std::string lines;
+  for (size_t i = 0; i < names.size() && i < 20; ++i) {
+    const auto photo = matches.find(names[i]);
+    lines += Str("  ", names[i],
+                 photo == matches.end() ? std::string(database.empty() ? "" : ": not in COLMAP's database")
+                                        : ": " + WhyNotRegistered(photo->second, options.min_pose_inliers),
+                 "\n");
+  }
+  if (names.size() > 20) lines += Str("  ... (", names.size(), " in all)\n");
+  lines.pop_back();
+  return lines;
+}
+
 void WriteSceneJson(const fs::path& path, const CalibrateReport& report, const std::string& source) {
   auto vector = [](const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
   const nlohmann::json scene = {{"frame", "tree"},
@@ -192,9 +203,10 @@ void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, 
 CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
   options.Check();
   CalibrateReport report;
-  const std::vector<std::string> images = ListImages(workspace / "images");
+  const std::vector<fs::path> photos = ListPhotos(workspace / "images");
+  const std::vector<std::string> images = PhotoNames(photos);
   report.images = int(images.size());
-  if (images.empty()) Fail((workspace / "images").string(), ": no photos (png, jpg, tif, bmp)");
+  const std::vector<fs::path> turned = CheckPhotoSizes(photos);
   const fs::path colmap_folder = workspace / "colmap";
   const bool run_colmap = options.import_model.empty() && options.known_cameras.empty();
   if (run_colmap && fs::exists(colmap_folder / "database.db") && !options.force)
@@ -214,7 +226,12 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
     fs::remove(colmap_folder / "database.db", ignored);
     fs::remove_all(colmap_folder / "sparse", ignored);
     fs::remove_all(colmap_folder / "masks", ignored);
-    const ColmapSfmResult sfm = RunColmapSfm(workspace, colmap_folder, options, progress);
+    // COLMAP's one shared camera takes one image size: photos turned to portrait get their own.
+    if (!turned.empty())
+      progress.Say("calibrate", Str(turned.size(), " of ", photos.size(), " photos are turned by 90 degrees (",
+                                    turned.front().filename().string(),
+                                    ", ...): COLMAP solves a camera for each photo instead of one for all"));
+    const ColmapSfmResult sfm = RunColmapSfm(workspace, colmap_folder, options, turned.empty(), progress);
     model = sfm.model;
     report.models_found = sfm.models_found;
     report.stage_seconds = sfm.stage_seconds;
@@ -234,6 +251,7 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
   if (report.registered != int(model.images.size()))
     progress.Say("calibrate", Str("the model has ", model.images.size() - report.registered,
                                   " cameras for photos not in images/; they are kept"));
+  const fs::path database = run_colmap ? colmap_folder / "database.db" : fs::path();
   auto list = [](const std::vector<std::string>& names) {
     std::string joined;
     for (size_t i = 0; i < names.size() && i < 20; ++i) joined += (i ? ", " : "") + names[i];
@@ -250,9 +268,11 @@ CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOpt
          "the photos need more overlap or texture. Logs in ", colmap_folder.string());
   if (report.registered < options.min_registered * report.images)
     Fail("only ", report.registered, " of ", report.images, " photos registered (--min-registered ",
-         options.min_registered, "); missing: ", list(report.unregistered));
+         options.min_registered, "); missing:\n", DescribeUnregistered(report.unregistered, database, options));
   if (!report.unregistered.empty())
-    progress.Say("calibrate", Str(report.unregistered.size(), " photos did not register: ", list(report.unregistered)));
+    progress.Say("calibrate",
+                 Str(report.unregistered.size(), report.unregistered.size() == 1 ? " photo" : " photos",
+                     " did not register:\n", DescribeUnregistered(report.unregistered, database, options)));
 
   // Into the tree frame.
   if (options.known_cameras.empty()) {

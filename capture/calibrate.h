@@ -80,7 +80,4 @@ void UpdateBoundsFromMattes(const std::filesystem::path& workspace, const HullOp
 // observations (a model stripped of its POINTS2D).
 double MeanReprojectionError(const ColmapModel& model);
 
-// Photos in `folder` (png, jpg, jpeg, tif, tiff, bmp; any case), file names sorted.
-std::vector<std::string> ListImages(const std::filesystem::path& folder);
-
 }  // namespace voltree

@@ -7,6 +7,7 @@
 
 #include "capture/colmap_binary.h"
 #include "capture/colmap_runner.h"
+#include "capture/photo_folder.h"
 #include "core/error.h"
 #include "core/image.h"
 
@@ -53,7 +54,7 @@ bool WriteFeatureMasks(const fs::path& workspace, const fs::path& mask_folder, c
 }
 
 ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_folder, const CalibrateOptions& options,
-                             Progress& progress) {
+                             bool shared_camera, Progress& progress) {
   const fs::path colmap = FindColmap();
   const fs::path database = colmap_folder / "database.db";
   const fs::path sparse = colmap_folder / "sparse";
@@ -71,7 +72,7 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
                                       "--image_path",
                                       images.string(),
                                       "--ImageReader.single_camera",
-                                      "1",
+                                      shared_camera ? "1" : "0",
                                       "--ImageReader.camera_model",
                                       options.camera_model,
                                       "--SiftExtraction.use_gpu",
@@ -85,7 +86,7 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   if (options.affine_features) extract.insert(extract.end(), {"--SiftExtraction.estimate_affine_shape", "1"});
   if (options.mask != FeatureMask::kAll) {
     const fs::path masks = colmap_folder / "masks";
-    if (WriteFeatureMasks(workspace, masks, ListImages(images), options))
+    if (WriteFeatureMasks(workspace, masks, PhotoNames(FindPhotos(images)), options))
       extract.insert(extract.end(), {"--ImageReader.mask_path", masks.string()});
     else
       progress.Say("calibrate", "not every photo has a matte in mattes/; extracting features everywhere");

@@ -18,9 +18,10 @@ struct ColmapSfmResult {
 };
 
 // Runs feature_extractor, the matcher, mapper and model_converter on DIR/images with the database,
-// masks and logs in `colmap_folder`. Throws Error when COLMAP fails or reconstructs nothing.
+// masks and logs in `colmap_folder`. `shared_camera`: one camera for all photos (they share one
+// size), else one per photo. Throws Error when COLMAP fails or reconstructs nothing.
 ColmapSfmResult RunColmapSfm(const std::filesystem::path& workspace, const std::filesystem::path& colmap_folder,
-                             const CalibrateOptions& options, Progress& progress);
+                             const CalibrateOptions& options, bool shared_camera, Progress& progress);
 
 // Writes COLMAP masks (DIR/colmap/masks/<image name>.png, 0 = no features) from DIR/mattes/.
 // Returns false (writing nothing) when a photo has no matte.

@@ -7,6 +7,7 @@
 
 #include "capture/calibrate.h"
 #include "capture/colmap_binary.h"
+#include "capture/photo_folder.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
 
@@ -73,7 +74,7 @@ CaptureSummary SummarizeCapture(const fs::path& root, const std::string& tree, b
   const fs::path dir = root / tree;
   CaptureSummary summary;
   summary.tree = tree;
-  if (fs::is_directory(dir / "images")) summary.photos = int(ListImages(dir / "images").size());
+  summary.photos = int(FindPhotos(dir / "images").size());
   try {
     if (fs::is_directory(dir / "sparse")) summary.registered = int(ReadColmapModel(dir / "sparse").Views().size());
   } catch (const Error&) {  // an unreadable model shows as unknown; its stage's log says why

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "capture/colmap_binary.h"
+#include "capture/photo_folder.h"
 #include "compress/compress_workspace.h"
 #include "core/colmap_model.h"
 #include "core/image.h"
@@ -116,7 +117,7 @@ void CheckRunWorkspace(const RunOptions& options) {
                                                                   : "sparse/ is missing";
     if (!fs::is_directory(images))
       Fail(images.string(), ": missing; ", why, ", so the photos of the tree are needed (PNG, JPEG, TIFF or BMP)");
-    if (ListImages(images).empty()) Fail(images.string(), ": no photos (png, jpg, tif, bmp); ", why);
+    if (FindPhotos(images).empty()) Fail(images.string(), ": no photos (png, jpg, tif, bmp, exr); ", why);
   }
   if (!NeedsMattes(dir) && !NeedsCameras(dir) && !fs::is_directory(dir / "images") &&
       !fs::is_directory(dir / "foreground"))

@@ -10,6 +10,7 @@ packages=(
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libsquish-dev libcli11-dev nlohmann-json3-dev libtbb-dev libzstd-dev
   libtinygltf-dev libtinyobjloader-dev gnuplot-nox ffmpeg
+  libsqlite3-dev  # why a photo did not register: COLMAP's feature database
   snakemake  # voltree batch: many workspaces, locally or on a cluster
   libglfw3-dev libimgui-dev  # voltree view: a window and its panel
   chromium xvfb xauth  # the viewers' tests: WebGL2 in headless Chromium, a window under Xvfb

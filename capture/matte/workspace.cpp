@@ -13,6 +13,7 @@
 
 #include "capture/matte/foreground.h"
 #include "capture/matte/image.h"
+#include "capture/photo_folder.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
@@ -23,17 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* const kImageExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".exr"};
-
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return text;
-}
-
-bool IsImageFile(const fs::path& path) {
-  const std::string extension = Lower(path.extension().string());
-  return std::any_of(std::begin(kImageExtensions), std::end(kImageExtensions),
-                     [&](const char* known) { return extension == known; });
-}
 
 // One photo: its matte (computed or the user's) and its premultiplied foreground.
 struct MatteOutputs {
@@ -74,26 +64,6 @@ void MatteWorkspaceOptions::Check() const {
     Fail(user_mattes.string(), ": --mattes expects a folder of mattes named like the photos");
 }
 
-std::vector<fs::path> ListPhotos(const fs::path& images_dir) {
-  if (!fs::is_directory(images_dir))
-    Fail(images_dir.string(), ": no such folder; expected the photos of the workspace there");
-  std::vector<fs::path> photos;
-  for (const auto& entry : fs::directory_iterator(images_dir))
-    if (entry.is_regular_file() && IsImageFile(entry.path()) && entry.path().filename().string()[0] != '.')
-      photos.push_back(entry.path());
-  std::sort(photos.begin(), photos.end());
-  if (photos.empty())
-    Fail(images_dir.string(), ": no photos (expected .png, .jpg, .jpeg, .tif, .tiff, .bmp or .exr files)");
-  std::map<std::string, fs::path> by_stem;
-  for (const fs::path& photo : photos) {
-    const auto [it, inserted] = by_stem.emplace(photo.stem().string(), photo);
-    if (!inserted)
-      Fail(photo.string(), ": has the same name as ", it->second.string(), "; their mattes would collide in mattes/",
-           photo.stem().string(), ".png");
-  }
-  return photos;
-}
-
 fs::path FindUserMatte(const fs::path& mattes_dir, const fs::path& photo) {
   const std::string stem = photo.stem().string();
   for (const char* extension : kImageExtensions) {
@@ -110,26 +80,6 @@ void CheckMatteSize(const fs::path& matte, const fs::path& photo) {
   const auto [pw, ph] = ReadImageSize(photo);
   if (mw != pw || mh != ph)
     Fail(matte.string(), ": matte is ", mw, "x", mh, " but its photo ", photo.string(), " is ", pw, "x", ph);
-}
-
-// Photos of different sizes (thumbnails, another camera) cannot be one capture, though the camera
-// may be turned (portrait and landscape); a photo too small to hold a tree gives a matte of
-// noise. Both are refused before any work.
-void CheckPhotoSizes(const std::vector<fs::path>& photos) {
-  constexpr int kMinSide = 16;
-  const auto first = ReadImageSize(photos.front());
-  for (const fs::path& photo : photos) {
-    const auto size = ReadImageSize(photo);
-    if (size.first < kMinSide || size.second < kMinSide)
-      Fail(photo.string(), ": photo is ", size.first, "x", size.second, "; expected at least ", kMinSide, "x", kMinSide,
-           " pixels");
-    const bool turned = size.first == first.second && size.second == first.first;  // portrait and landscape
-    if (size != first && !turned)
-      Fail(photo.string(), ": photo is ", size.first, "x", size.second, " but ", photos.front().string(), " is ",
-           first.first, "x", first.second,
-           "; expected every photo of a capture to have the same size (or turned by "
-           "90 degrees)");
-  }
 }
 
 size_t MatteWorkspace(const fs::path& dir, const MatteWorkspaceOptions& options, Progress& progress) {

@@ -25,10 +25,6 @@ struct MatteWorkspaceOptions {
   void Check() const;
 };
 
-// The photos in `images_dir` (PNG, JPEG, TIFF, BMP by extension, any case), sorted by name.
-// Throws Error when the folder is missing, holds no photo, or two photos share a stem.
-std::vector<std::filesystem::path> ListPhotos(const std::filesystem::path& images_dir);
-
 // The user's matte for `photo` in `mattes_dir`: the file with the photo's stem and an image
 // extension. Throws Error naming the expected file and the photo when there is none.
 std::filesystem::path FindUserMatte(const std::filesystem::path& mattes_dir, const std::filesystem::path& photo);

@@ -114,6 +114,14 @@ const std::vector<BadInputCase>& Cases() {
        },
        1,
        {"ws/images/view_9.png", "48x40", "64x48", "same size"}},
+      {"photos of different sizes, before COLMAP runs",
+       "calibrate ws --quiet",
+       [](const fs::path& d) {
+         WritePhotos(d / "ws" / "images", 3, 64, 48);
+         WriteImage(d / "ws" / "images" / "view_9.png", Photo(48, 40));
+       },
+       1,
+       {"ws/images/view_9.png", "48x40", "64x48", "one camera, one size"}},
       {"a 1x1 photo",
        "matte ws --refine none --quiet",
        [](const fs::path& d) { WritePhotos(d / "ws" / "images", 1, 1, 1); },

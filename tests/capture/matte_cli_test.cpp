@@ -11,6 +11,7 @@
 
 #include "capture/matte/metrics.h"
 #include "capture/matte/workspace.h"
+#include "capture/photo_folder.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
