@@ -306,11 +306,28 @@ std::vector<OptionSpec> EvaluateFlags() {
   };
 }
 
+// The LOD bench (lod-bench).
+std::vector<OptionSpec> LodBenchFlags() {
+  return {
+      {"--sizes",
+       {"LodBenchOptions.sizes"},
+       "Comma-separated screen sizes: the tree framed as in the studio's photos, in an image this many pixels tall "
+       "(8 to the frame's height, --size)"},
+      {"--min-lambda",
+       {"LodBenchOptions.min_lambda"},
+       "The smallest fraction of leaves a size keeps, in (0, 1]; lambda = max(this, (size / frame)^2)"},
+      {"--prune-seed", {"LodBenchOptions.seed"}, "Seed of the leaves' random pruning order"},
+      {"--top-views",
+       {"LodBenchOptions.top_views"},
+       "Views from 80 degrees above the horizon, besides the held-out ring (0..16)"},
+  };
+}
+
 // Grouped by the stage whose options they set; within a group, in the order of --help.
 std::vector<OptionSpec> MakeRegistry() {
   std::vector<OptionSpec> registry;
   for (auto group : {CommandFlags, TreeFlags, StudioFlags, CalibrateFlags, MatteFlags, ReconstructFlags, CompressFlags,
-                     RenderFlags, RunFlags, BatchFlags, ViewerFlags, EvaluateFlags})
+                     RenderFlags, RunFlags, BatchFlags, ViewerFlags, EvaluateFlags, LodBenchFlags})
     for (OptionSpec& spec : group()) registry.push_back(std::move(spec));
   return registry;
 }

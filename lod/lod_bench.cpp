@@ -1,0 +1,258 @@
+#include "lod/lod_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <set>
+
+#include "core/error.h"
+#include "core/image_metrics.h"
+#include "lod/leaf_separation.h"
+#include "lod/lod_view_renderer.h"
+#include "lod/pruned_mesh.h"
+#include "lod/screen_size_rule.h"
+#include "lod/stochastic_pruning.h"
+#include "samples/studio_rig.h"
+#include "samples/studio_tree_renderer.h"
+
+namespace voltree {
+namespace {
+
+constexpr double kTopElevationDegrees = 80;
+constexpr size_t kVertexBytes = 11 * sizeof(float);  // position, normal, uv, tint as the studio uploads them
+
+// The views: the held-out ring, plus `top_views` from high above at azimuths spread evenly, far
+// enough that the bounding sphere fits the frame.
+std::vector<View> BenchViews(const StudioRig& rig, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             const StudioOptions& studio, int top_views) {
+  std::vector<View> views = rig.held_out;
+  const double radius = std::max(0.5 * (hi - lo).norm(), 1e-3);
+  const double half_angle =
+      std::atan(std::tan(0.5 * studio.fov_degrees * std::numbers::pi / 180) * (1 - studio.margin));
+  const double distance = std::max(rig.distance, radius / std::sin(half_angle));
+  const double elevation = kTopElevationDegrees * std::numbers::pi / 180;
+  for (int k = 0; k < top_views; ++k) {
+    const double azimuth = 2 * std::numbers::pi * (k + 0.125) / top_views;
+    const Eigen::Vector3d direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                                    std::sin(elevation));
+    View view;
+    view.name = "top_" + std::to_string(k);
+    view.camera = rig.held_out.empty() ? MakeStudioCamera(studio) : rig.held_out.front().camera;
+    view.pose = Pose::LookAt(rig.target + distance * direction, rig.target, Eigen::Vector3d::UnitZ());
+    views.push_back(view);
+  }
+  return views;
+}
+
+// The same views in an image `size` pixels tall (the tree framed the same way, smaller).
+std::vector<View> AtSize(std::vector<View> views, int size) {
+  for (View& view : views) {
+    const double factor = static_cast<double>(size) / view.camera.height;
+    view.camera = view.camera.Resized(std::max(1, static_cast<int>(std::lround(view.camera.width * factor))), size);
+  }
+  return views;
+}
+
+size_t TextureBytes(const TreeMesh& mesh) {
+  size_t bytes = 0;
+  for (const Image8& texture : mesh.textures) bytes += texture.pixels.size() * 4 / std::max(texture.channels, 1);
+  return bytes;
+}
+
+size_t GeometryBytes(const TreeMesh& mesh) {
+  return mesh.vertices.size() * kVertexBytes + mesh.TriangleCount() * 3 * sizeof(uint32_t);
+}
+
+// Metrics of renders against references, views pooled.
+struct Pooled {
+  CoverageCounts coverage;
+  double rgb_mse = 0, alpha_mse = 0, multiscale_rms = 0;
+  std::vector<double> draw_ms;
+  int64_t fragments = 0;
+  int views = 0;
+};
+
+double MseFromPsnr(double psnr) { return std::isinf(psnr) ? 0.0 : 255.0 * 255.0 / std::pow(10.0, psnr / 10); }
+
+void AddView(Pooled& pooled, const LodFrame& frame, const Image8& reference) {
+  ImageMetricsOptions options;
+  options.render_premultiplied = options.truth_premultiplied = true;
+  const ViewMetrics metrics = CompareViews(frame.foreground, reference, options);
+  pooled.coverage.true_positives += metrics.coverage.true_positives;
+  pooled.coverage.false_positives += metrics.coverage.false_positives;
+  pooled.coverage.false_negatives += metrics.coverage.false_negatives;
+  pooled.rgb_mse += MseFromPsnr(metrics.rgb_psnr);
+  pooled.alpha_mse += MseFromPsnr(metrics.alpha_psnr);
+  pooled.multiscale_rms += metrics.multiscale_rms;
+  pooled.draw_ms.push_back(frame.draw_ms);
+  pooled.fragments = frame.fragments < 0 || pooled.fragments < 0 ? -1 : pooled.fragments + frame.fragments;
+  ++pooled.views;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The box that holds the mesh with its leaves scaled by up to `max_area_scale` about their centres.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> GrownBounds(const TreeMesh& mesh, double max_area_scale) {
+  const auto [lo, hi] = mesh.Bounds();
+  const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * std::sqrt(max_area_scale) * (hi - lo).cast<double>().norm() * 0.1);
+  return {lo.cast<double>() - pad, hi.cast<double>() + pad};
+}
+
+}  // namespace
+
+void LodBenchOptions::Check() const {
+  studio.Check();
+  if (sizes.empty()) FailOption("LodBenchOptions.sizes", "is empty: give at least one screen size");
+  const int frame = std::min(studio.width, studio.height);
+  for (int size : sizes)
+    if (size < 8 || size > frame)
+      FailOption("LodBenchOptions.sizes", "has ", size, " px, outside the frame: sizes go from 8 to the frame's ",
+                 frame, " px");
+  if (!(min_lambda > 0 && min_lambda <= 1))
+    FailOption("LodBenchOptions.min_lambda", "is ", min_lambda, ", outside (0, 1]: it is a fraction of the leaves");
+  if (top_views < 0 || top_views > 16) FailOption("LodBenchOptions.top_views", "is ", top_views, ", not in 0..16");
+  if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
+}
+
+LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
+                           Progress& progress) {
+  options.Check();
+  mesh.Check();
+  LodBenchResult result;
+  result.tree = tree_name;
+  result.triangle_count = mesh.TriangleCount();
+  const std::vector<Leaf> leaves = SeparateLeaves(mesh);
+  result.leaf_count = leaves.size();
+  result.leaf_area = TotalLeafArea(leaves);
+  const std::vector<uint32_t> order = RandomLeafOrder(leaves.size(), options.seed);
+  result.methods = {"full"};
+  if (leaves.empty())
+    result.notes.push_back(
+        "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook and neubert need "
+        "leaves; only the full mesh was measured");
+  else
+    result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert"});
+
+  const int frame = std::min(options.studio.width, options.studio.height);
+  std::vector<double> lambdas;  // per size
+  for (int size : options.sizes) lambdas.push_back(LambdaForScreenSize(size, frame, options.min_lambda));
+
+  const auto [mesh_lo, mesh_hi] = mesh.Bounds();
+  const double max_scale = std::pow(options.min_lambda, -1.3);
+  const auto [lo, hi] = GrownBounds(mesh, max_scale);
+  LodViewRenderer renderer(options.studio, lo, hi);
+  result.renderer = renderer.context().renderer();
+  result.fragments_available = renderer.counts_fragments();
+  const StudioRig rig = MakeStudioRig(mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio);
+  const std::vector<View> views = BenchViews(rig, mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio,
+                                             options.top_views);
+  result.views = static_cast<int>(views.size());
+  const StudioTreeRenderer full(mesh);
+
+  // Methods are drawn as a renderer would draw them at that size (the bench's supersampling);
+  // the reference is the full mesh sampled as finely as in the frame, so that sub-pixel leaves
+  // count with the coverage they have instead of vanishing into the alpha-tested texture's
+  // coarse mip levels.
+  const int supersample = options.studio.supersample;
+  const auto reference_supersample = [&](int size) {
+    return std::max(supersample, static_cast<int>(std::lround(static_cast<double>(frame) * supersample / size)));
+  };
+  const auto render_all = [&](const StudioTreeRenderer& tree, const std::vector<View>& at, int samples) {
+    std::vector<LodFrame> frames;
+    for (const View& view : at) frames.push_back(renderer.Render(tree, view, samples));
+    return frames;
+  };
+  const auto pool = [&](const std::vector<LodFrame>& frames, const std::vector<LodFrame>& references) {
+    Pooled pooled;
+    for (size_t v = 0; v < frames.size(); ++v) AddView(pooled, frames[v], references[v].foreground);
+    return pooled;
+  };
+
+  // Neubert's preprocessing: the PR-optimal scale for each size's lambda, on the input views at
+  // that size. (The paper tabulates over lambda alone, PR being invariant to screen size for its
+  // renderer; here alpha-tested leaves lose coverage in coarse mip levels, so it is not.)
+  std::map<int, double> optimal_scale;  // by size
+  if (!leaves.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<View> training;
+    const size_t step = std::max<size_t>(1, rig.inputs.size() / options.preprocess_views);
+    for (size_t i = 0; i < rig.inputs.size() && training.size() < static_cast<size_t>(options.preprocess_views);
+         i += step)
+      training.push_back(rig.inputs[i]);
+    for (size_t s = 0; s < options.sizes.size(); ++s) {
+      const int size = options.sizes[s];
+      progress.Step("neubert scales", s, options.sizes.size());
+      if (optimal_scale.count(size)) continue;
+      const std::vector<View> at = AtSize(training, size);
+      const std::vector<LodFrame> references = render_all(full, at, reference_supersample(size));
+      ScaleSearch search;
+      search.size = size;
+      search.lambda = lambdas[s];
+      for (double scale : CandidateAreaScales(search.lambda)) {
+        const StudioTreeRenderer tree(BuildPrunedMesh(mesh, leaves, PruneLeaves(order, search.lambda, scale)));
+        const Pooled pooled = pool(render_all(tree, at, supersample), references);
+        search.trials.push_back({scale, pooled.coverage.Precision(), pooled.coverage.Recall()});
+      }
+      search.best = BestScaleTrial(search.trials);
+      optimal_scale[size] = search.best.area_scale;
+      result.scale_searches.push_back(search);
+    }
+    progress.Step("neubert scales", options.sizes.size(), options.sizes.size());
+    result.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  const size_t texture_bytes = TextureBytes(mesh);
+  for (size_t s = 0; s < options.sizes.size(); ++s) {
+    const int size = options.sizes[s];
+    const double lambda = lambdas[s];
+    progress.Say("lod-bench", Str(size, " px: lambda ", lambda));
+    const std::vector<View> at = AtSize(views, size);
+    const int fine = reference_supersample(size);
+    const std::vector<LodFrame> references = render_all(full, at, fine);
+    for (const std::string& method : result.methods) {
+      LodBenchRow row;
+      row.method = method;
+      row.size = size;
+      std::vector<LodFrame> frames;
+      TreeMesh drawn;
+      if (method == "full") {
+        drawn = mesh;
+        row.leaves = leaves.size();
+        frames = fine == supersample ? references : render_all(full, at, supersample);
+      } else {
+        row.lambda = lambda;
+        row.area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale.at(size);
+        const std::vector<LeafDraw> draws = PruneLeaves(order, lambda, row.area_scale);
+        row.leaves = draws.size();
+        drawn = BuildPrunedMesh(mesh, leaves, draws);
+        const StudioTreeRenderer tree(drawn);
+        frames = render_all(tree, at, supersample);
+      }
+      row.triangles = drawn.TriangleCount();
+      row.geometry_bytes = GeometryBytes(drawn);
+      row.texture_bytes = texture_bytes;
+      const Pooled pooled = pool(frames, references);
+      row.precision = pooled.coverage.Precision();
+      row.recall = pooled.coverage.Recall();
+      row.pr_score = PrScore(row.precision, row.recall);
+      row.multiscale_rms = pooled.multiscale_rms / pooled.views;
+      row.rgb_psnr = PsnrFromMse(pooled.rgb_mse / pooled.views, 255);
+      row.alpha_psnr = PsnrFromMse(pooled.alpha_mse / pooled.views, 255);
+      row.draw_ms = Median(pooled.draw_ms);
+      row.fragments = pooled.fragments < 0 ? -1 : pooled.fragments / pooled.views;
+      result.rows.push_back(row);
+    }
+  }
+  return result;
+}
+
+}  // namespace voltree
