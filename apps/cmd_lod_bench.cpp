@@ -77,8 +77,8 @@ void AddLodBenchCommand(CLI::App& app) {
       std::to_string(args->tree.seed));
   AddChoice(*command, "--mesh-up", args->tree.up, {{"y", UpAxis::kY}, {"z", UpAxis::kZ}});
   AddParsedOption<std::vector<int>>(
-      *command, "--sizes", args->bench.sizes, [](const std::string& text, std::vector<int>& out) { out = ParseSizes(text); },
-      JoinSizes(args->bench.sizes));
+      *command, "--sizes", args->bench.sizes,
+      [](const std::string& text, std::vector<int>& out) { out = ParseSizes(text); }, JoinSizes(args->bench.sizes));
   AddOption(*command, "--min-lambda", args->bench.min_lambda);
   AddOption(*command, "--prune-seed", args->bench.seed);
   AddOption(*command, "--top-views", args->bench.top_views);

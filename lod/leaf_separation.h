@@ -12,10 +12,10 @@
 namespace voltree {
 
 struct Leaf {
-  int group = 0;                   // index into TreeMesh::groups
-  std::vector<uint32_t> triangles;  // triangle numbers within that group, ascending
+  int group = 0;                                     // index into TreeMesh::groups
+  std::vector<uint32_t> triangles;                   // triangle numbers within that group, ascending
   Eigen::Vector3f centre = Eigen::Vector3f::Zero();  // area-weighted centroid, what scaling keeps fixed
-  double area = 0;                 // one-sided
+  double area = 0;                                   // one-sided
 };
 
 // Whether a material is foliage: alpha-tested or blended (leaf cards), or named like the

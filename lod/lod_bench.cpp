@@ -103,7 +103,8 @@ double Median(std::vector<double> values) {
 // The box that holds the mesh with its leaves scaled by up to `max_area_scale` about their centres.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> GrownBounds(const TreeMesh& mesh, double max_area_scale) {
   const auto [lo, hi] = mesh.Bounds();
-  const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * std::sqrt(max_area_scale) * (hi - lo).cast<double>().norm() * 0.1);
+  const Eigen::Vector3d pad =
+      Eigen::Vector3d::Constant(0.5 * std::sqrt(max_area_scale) * (hi - lo).cast<double>().norm() * 0.1);
   return {lo.cast<double>() - pad, hi.cast<double>() + pad};
 }
 
@@ -153,8 +154,8 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
   result.renderer = renderer.context().renderer();
   result.fragments_available = renderer.counts_fragments();
   const StudioRig rig = MakeStudioRig(mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio);
-  const std::vector<View> views = BenchViews(rig, mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio,
-                                             options.top_views);
+  const std::vector<View> views =
+      BenchViews(rig, mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio, options.top_views);
   result.views = static_cast<int>(views.size());
   const StudioTreeRenderer full(mesh);
 

@@ -26,10 +26,9 @@ nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::js
 }  // namespace
 
 std::string LodBenchTable(const LodBenchResult& result) {
-  std::string text = Str("# LOD bench: ", result.tree, "\n\n", result.leaf_count, " leaves, ", result.triangle_count,
-                         " triangles; ", result.views,
-                         " views per size (the studio's held-out ring and top views); renderer: ", result.renderer,
-                         "\n\n");
+  std::string text = Str(
+      "# LOD bench: ", result.tree, "\n\n", result.leaf_count, " leaves, ", result.triangle_count, " triangles; ",
+      result.views, " views per size (the studio's held-out ring and top views); renderer: ", result.renderer, "\n\n");
   for (const std::string& note : result.notes) text += "Note: " + note + "\n\n";
   text +=
       "| method | size px | lambda | area scale | leaves | triangles | GPU KiB | draw ms | fragments | precision | "
@@ -91,7 +90,9 @@ std::string LodBenchJson(const LodBenchResult& result) {
     for (const ScaleTrial& trial : search.trials)
       trials.push_back({{"area_scale", trial.area_scale}, {"precision", trial.precision}, {"recall", trial.recall}});
     searches.push_back({{"size", search.size},
-                        {"lambda", search.lambda}, {"best_area_scale", search.best.area_scale}, {"trials", trials}});
+                        {"lambda", search.lambda},
+                        {"best_area_scale", search.best.area_scale},
+                        {"trials", trials}});
   }
   const nlohmann::json json = {{"tree", result.tree},
                                {"renderer", result.renderer},
@@ -134,16 +135,16 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
   PlotSpec cost = make_spec("quality_vs_cost.png", "PR score against triangles drawn (one point per size)",
                             "triangles drawn", "PR score Q = 1 - |(1-P, 1-R)|");
   cost.log_x = true;
-  PlotSpec rms = make_spec("rms_vs_size.png", "Multi-scale RMS against the full mesh", "tree height (px)",
-                           "multi-scale RMS");
+  PlotSpec rms =
+      make_spec("rms_vs_size.png", "Multi-scale RMS against the full mesh", "tree height (px)", "multi-scale RMS");
   rms.log_x = true;
   for (auto& [method, series] : by_cost) cost.series.push_back(series);
   for (auto& [method, series] : by_size) rms.series.push_back(series);
 
   // Neubert et al. 2011 fig. 2: one curve per lambda through the candidate scales, and the points
   // that Cook's and the PR-optimal scale choose.
-  PlotSpec pr = make_spec("pr_diagram.png", "Precision-recall of pruning and scaling (input views, each size)", "precision",
-                          "recall");
+  PlotSpec pr = make_spec("pr_diagram.png", "Precision-recall of pruning and scaling (input views, each size)",
+                          "precision", "recall");
   PlotSeries cook{"Cook s = 1/lambda", {}}, best{"PR-optimal s", {}};
   for (const ScaleSearch& search : result.scale_searches) {
     if (search.trials.size() < 2) continue;  // lambda 1: nothing to choose
@@ -152,7 +153,8 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
     pr.series.push_back(curve);
     const ScaleTrial* nearest = &search.trials.front();
     for (const ScaleTrial& trial : search.trials)
-      if (std::abs(std::log(trial.area_scale * search.lambda)) < std::abs(std::log(nearest->area_scale * search.lambda)))
+      if (std::abs(std::log(trial.area_scale * search.lambda)) <
+          std::abs(std::log(nearest->area_scale * search.lambda)))
         nearest = &trial;
     cook.points.emplace_back(nearest->precision, nearest->recall);
     best.points.emplace_back(search.best.precision, search.best.recall);

@@ -38,9 +38,7 @@ std::pair<double, double> DepthRange(const View& view, const Eigen::Vector3d& lo
 
 LodViewRenderer::LodViewRenderer(const StudioOptions& studio, const Eigen::Vector3d& bounds_min,
                                  const Eigen::Vector3d& bounds_max)
-    : lighting_((studio.Check(), MakeStudioLighting(studio))),
-      bounds_min_(bounds_min),
-      bounds_max_(bounds_max) {
+    : lighting_((studio.Check(), MakeStudioLighting(studio))), bounds_min_(bounds_min), bounds_max_(bounds_max) {
   counts_fragments_ = HasExtension("GL_ARB_pipeline_statistics_query");
 }
 

@@ -19,9 +19,9 @@
 namespace voltree {
 
 struct LodFrame {
-  Image8 foreground;        // RGBA, sRGB colour premultiplied by coverage, as the studio's foreground/
-  double draw_ms = 0;       // both passes of the tree's draw, at the supersampled resolution
-  int64_t fragments = -1;   // fragment shader invocations of both passes; -1: not available
+  Image8 foreground;       // RGBA, sRGB colour premultiplied by coverage, as the studio's foreground/
+  double draw_ms = 0;      // both passes of the tree's draw, at the supersampled resolution
+  int64_t fragments = -1;  // fragment shader invocations of both passes; -1: not available
 };
 
 class LodViewRenderer {

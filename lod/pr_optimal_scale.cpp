@@ -7,9 +7,7 @@
 
 namespace voltree {
 
-double PrScore(double precision, double recall) {
-  return 1 - std::hypot(1 - precision, 1 - recall);
-}
+double PrScore(double precision, double recall) { return 1 - std::hypot(1 - precision, 1 - recall); }
 
 const ScaleTrial& BestScaleTrial(const std::vector<ScaleTrial>& trials) {
   if (trials.empty()) Fail("lod: no scale trials to choose from");
