@@ -16,6 +16,8 @@
 #include "lod/pruned_mesh.h"
 #include "lod/screen_size_rule.h"
 #include "lod/stochastic_pruning.h"
+#include "lod/vmi_pruning.h"
+#include "lod/leaf_id_renderer.h"
 #include "samples/studio_rig.h"
 #include "samples/studio_tree_renderer.h"
 
@@ -23,6 +25,7 @@ namespace voltree {
 namespace {
 
 constexpr double kTopElevationDegrees = 80;
+constexpr int kVmiSize = 256;                        // the id renders' size, as the VMI paper's
 constexpr size_t kVertexBytes = 11 * sizeof(float);  // position, normal, uv, tint as the studio uploads them
 
 // The views: the held-out ring, plus `top_views` from high above at azimuths spread evenly, far
@@ -139,9 +142,9 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
   if (leaves.empty())
     result.notes.push_back(
         "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook and neubert need "
-        "leaves; only the full mesh was measured");
+        "leaves; vmi too; only the full mesh was measured");
   else
-    result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert"});
+    result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
 
   const int frame = std::min(options.studio.width, options.studio.height);
   std::vector<double> lambdas;  // per size
@@ -211,6 +214,18 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
     result.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
+  // The VMI removal sequence, down to the fewest leaves any size keeps, from the input views.
+  std::vector<VmiRemoval> vmi_sequence;
+  if (!leaves.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    progress.Say("vmi", Str("ranking ", leaves.size(), " leaves from ", rig.inputs.size(), " views"));
+    size_t keep = leaves.size();
+    for (double lambda : lambdas) keep = std::min(keep, KeptLeafCount(leaves.size(), lambda));
+    LeafIdRenderer ids(mesh, leaves);
+    vmi_sequence = VmiRemovalSequence(ids, leaves.size(), AtSize(rig.inputs, kVmiSize), keep);
+    result.vmi_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
   const size_t texture_bytes = TextureBytes(mesh);
   for (size_t s = 0; s < options.sizes.size(); ++s) {
     const int size = options.sizes[s];
@@ -231,8 +246,16 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
         frames = fine == supersample ? references : render_all(full, at, supersample);
       } else {
         row.lambda = lambda;
-        row.area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale.at(size);
-        const std::vector<LeafDraw> draws = PruneLeaves(order, lambda, row.area_scale);
+        std::vector<LeafDraw> draws;
+        if (method == "vmi") {
+          draws = VmiLeafDraws(leaves, vmi_sequence, leaves.size() - KeptLeafCount(leaves.size(), lambda));
+          double sum = 0;
+          for (const LeafDraw& draw : draws) sum += draw.area_scale;
+          row.area_scale = sum / static_cast<double>(std::max<size_t>(draws.size(), 1));  // mean: each leaf has its own
+        } else {
+          row.area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale.at(size);
+          draws = PruneLeaves(order, lambda, row.area_scale);
+        }
         row.leaves = draws.size();
         drawn = BuildPrunedMesh(mesh, leaves, draws);
         const StudioTreeRenderer tree(drawn);

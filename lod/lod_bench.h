@@ -41,7 +41,7 @@ struct LodBenchRow {
   std::string method;
   int size = 0;
   double lambda = 1;      // fraction of leaves drawn
-  double area_scale = 1;  // of each drawn leaf
+  double area_scale = 1;  // of each drawn leaf (vmi: their mean)
   size_t leaves = 0;
   size_t triangles = 0;
   size_t geometry_bytes = 0;  // vertex and index buffers
@@ -74,10 +74,13 @@ struct LodBenchResult {
   std::vector<LodBenchRow> rows;
   std::vector<ScaleSearch> scale_searches;
   double preprocess_seconds = 0;  // Neubert's scale search, all sizes
+  double vmi_seconds = 0;         // the VMI removal sequence
 };
 
 // The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"
-// (lambda, s = 1 / lambda) and "neubert" (lambda, PR-optimal s). Needs a GL context of its own.
+// (lambda, s = 1 / lambda), "neubert" (lambda, PR-optimal s) and "vmi" (lambda, leaves removed
+// in the VMI order, each removal growing its nearest leaf; area_scale is the mean). Needs a GL
+// context of its own.
 LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
                            Progress& progress);
 

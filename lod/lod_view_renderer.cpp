@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "lod/depth_range.h"
 #include "render/gl.h"
 #include "samples/studio_layers.h"
 
@@ -20,20 +21,6 @@ bool HasExtension(const char* name) {
   return false;
 }
 
-// Camera depth range of the box's corners, with slack (as the studio's renderer).
-std::pair<double, double> DepthRange(const View& view, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  double nearest = 1e300, farthest = -1e300;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
-                            (corner & 4) ? hi.z() : lo.z());
-    const double z = view.pose.ToCamera(p).z();
-    nearest = std::min(nearest, z);
-    farthest = std::max(farthest, z);
-  }
-  farthest = std::max(farthest, 1e-3) * 1.05 + 1e-3;
-  return {std::max(nearest * 0.95, farthest * 1e-4), farthest};
-}
-
 }  // namespace
 
 LodViewRenderer::LodViewRenderer(const StudioOptions& studio, const Eigen::Vector3d& bounds_min,
@@ -48,7 +35,7 @@ LodFrame LodViewRenderer::Render(const StudioTreeRenderer& tree, const View& vie
     target_ = std::make_unique<Framebuffer>(width, height, ColorFormat::kRGBA16F, true);
   target_->Bind();
   target_->Clear(0, 0, 0, 0);
-  const auto [near, far] = DepthRange(view, bounds_min_, bounds_max_);
+  const auto [near, far] = BoxDepthRange(view, bounds_min_, bounds_max_);
 
   LodFrame frame;
   GLuint query = 0;

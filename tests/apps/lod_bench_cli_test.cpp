@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 
 // A trunk (two triangles, opaque) and 60 leaf cards of the material "leaves", Z up.
 void WriteTinyTree(const fs::path& folder) {
-  std::string obj = "mtllib tiny.mtl\nv -0.05 0 0\nv 0.05 0 0\nv 0.05 0 1\nv -0.05 0 1\nusemtl bark\nf 1 2 3\nf 1 3 4\n";
+  std::string obj =
+      "mtllib tiny.mtl\nv -0.05 0 0\nv 0.05 0 0\nv 0.05 0 1\nv -0.05 0 1\nusemtl bark\nf 1 2 3\nf 1 3 4\n";
   std::string faces = "usemtl leaves\n";
   uint64_t state = 3;
   const auto next = [&state] {
@@ -46,9 +47,8 @@ class LodBenchCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   test::Outcome Run(const std::string& arguments) {
-    return test::VoltreeCaptured("lod-bench tiny.obj --mesh-up z --size 48 --held-out 2 --top-views 1 --quiet " +
-                                     arguments,
-                                 dir_.string());
+    return test::VoltreeCaptured(
+        "lod-bench tiny.obj --mesh-up z --size 48 --held-out 2 --top-views 1 --quiet " + arguments, dir_.string());
   }
   fs::path dir_;
 };
@@ -72,9 +72,9 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
       EXPECT_LT(row["lambda"].get<double>(), 1.0) << row;
     }
   }
-  for (const char* method : {"full", "pruned", "cook", "neubert"})
+  for (const char* method : {"full", "pruned", "cook", "neubert", "vmi"})
     for (int size : {48, 24, 12}) EXPECT_TRUE(seen.count({method, size})) << method << " " << size;
-  EXPECT_EQ(seen.size(), 12u);
+  EXPECT_EQ(seen.size(), 15u);
 
   // The same inputs and seeds: the same numbers (draw times and fragments aside).
   ASSERT_EQ(Run("--sizes 48,24,12 -o again").status, 0);
@@ -82,6 +82,7 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
   nlohmann::json first = json;
   for (nlohmann::json* j : {&first, &again}) {
     (*j).erase("preprocess_seconds");
+    (*j).erase("vmi_seconds");
     for (auto& row : (*j)["rows"]) row.erase("draw_ms");
   }
   EXPECT_EQ(first, again);
