@@ -1,4 +1,4 @@
-// voltree lod-bench: the seed papers' leaf-pruning methods measured against the full mesh over a
+// voltree lod-bench: published leaf-pruning methods measured against the full mesh over a
 // sweep of screen sizes -> table.md, lod_bench.json, plots/.
 #include <cstdio>
 #include <filesystem>
@@ -61,7 +61,7 @@ std::string JoinSizes(const std::vector<int>& sizes) {
 void AddLodBenchCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "lod-bench",
-      "Measure the seed papers' leaf-pruning levels of detail (stochastic pruning with Cook et al.'s 1/lambda "
+      "Measure published leaf-pruning levels of detail (stochastic pruning with Cook et al.'s 1/lambda "
       "scaling, Neubert et al.'s PR-optimal scaling) against the full mesh over a sweep of screen sizes, from the "
       "studio's held-out ring and from above. Writes table.md, lod_bench.json and plots/");
   auto args = std::make_shared<LodBenchArguments>();

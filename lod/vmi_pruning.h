@@ -1,5 +1,6 @@
-// Viewpoint-driven leaf pruning (seed paper 003): the leaf removed next is the one whose removal
-// changes the viewpoint mutual information I(v; F) = sum_o p(o|v) log(p(o|v) / p(o)) least,
+// Viewpoint-driven leaf pruning (foliage simplification by viewpoint mutual information, VMI):
+// the leaf removed next is the one whose removal changes the viewpoint mutual information
+// I(v; F) = sum_o p(o|v) log(p(o|v) / p(o)) least,
 // summed over the views (their eqs. 1 and 4), with p(o|v) the leaf's share of the visible leaf
 // pixels in view v and p(o) its mean over the views. The removed leaf's size goes to its nearest
 // remaining leaf in proportion to that cost (their eq. 5): Size(l') += Size(l) * Lpru(l).
