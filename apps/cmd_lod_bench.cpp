@@ -82,6 +82,7 @@ void AddLodBenchCommand(CLI::App& app) {
   AddOption(*command, "--min-lambda", args->bench.min_lambda);
   AddOption(*command, "--prune-seed", args->bench.seed);
   AddOption(*command, "--top-views", args->bench.top_views);
+  AddOption(*command, "--asset", args->bench.asset);
   AddOption(*command, "--held-out", args->bench.studio.held_out);
   AddParsedOption<StudioOptions>(
       *command, "--size", args->bench.studio,

@@ -293,7 +293,10 @@ std::vector<OptionSpec> EvaluateFlags() {
        {"EvaluateOptions.budget"},
        "Also measure what each step costs (the volume, uncompressed billboards, VQ, DXT5, the LOD) at the input "
        "and held-out views; needs DIR/volume; adds a table to the report and metrics.json"},
-      {"--asset", {"EvaluateOptions.asset"}, "The asset to evaluate (default: DIR/tree.vtree)"},
+      {"--asset",
+       {"EvaluateOptions.asset", "LodBenchOptions.asset"},
+       "The .vtree asset to measure (eval: default DIR/tree.vtree; lod-bench: drawn as an extra row, none by "
+       "default)"},
       {"--report",
        {"EvaluateOptions.report"},
        "Report folder (default: DIR/report); its other files (contact sheet, orbit/) are kept"},

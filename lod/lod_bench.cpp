@@ -11,6 +11,8 @@
 
 #include "core/error.h"
 #include "core/image_metrics.h"
+#include "core/vtree.h"
+#include "render/tree_renderer.h"
 #include "lod/leaf_separation.h"
 #include "lod/lod_view_renderer.h"
 #include "lod/pruned_mesh.h"
@@ -81,9 +83,11 @@ struct Pooled {
 
 double MseFromPsnr(double psnr) { return std::isinf(psnr) ? 0.0 : 255.0 * 255.0 / std::pow(10.0, psnr / 10); }
 
-void AddView(Pooled& pooled, const LodFrame& frame, const Image8& reference) {
+// `straight`: the render has straight alpha (the asset renderer's); references are premultiplied.
+void AddView(Pooled& pooled, const LodFrame& frame, const Image8& reference, bool straight = false) {
   ImageMetricsOptions options;
-  options.render_premultiplied = options.truth_premultiplied = true;
+  options.render_premultiplied = !straight;
+  options.truth_premultiplied = true;
   const ViewMetrics metrics = CompareViews(frame.foreground, reference, options);
   pooled.coverage.true_positives += metrics.coverage.true_positives;
   pooled.coverage.false_positives += metrics.coverage.false_positives;
@@ -101,6 +105,18 @@ double Median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The row's quality, draw time and fragments from the pooled views.
+void FillQuality(LodBenchRow& row, const Pooled& pooled) {
+  row.precision = pooled.coverage.Precision();
+  row.recall = pooled.coverage.Recall();
+  row.pr_score = PrScore(row.precision, row.recall);
+  row.multiscale_rms = pooled.multiscale_rms / pooled.views;
+  row.rgb_psnr = PsnrFromMse(pooled.rgb_mse / pooled.views, 255);
+  row.alpha_psnr = PsnrFromMse(pooled.alpha_mse / pooled.views, 255);
+  row.draw_ms = Median(pooled.draw_ms);
+  row.fragments = pooled.fragments < 0 ? -1 : pooled.fragments / pooled.views;
 }
 
 // The box that holds the mesh with its leaves scaled by up to `max_area_scale` about their centres.
@@ -124,6 +140,8 @@ void LodBenchOptions::Check() const {
   if (!(min_lambda > 0 && min_lambda <= 1))
     FailOption("LodBenchOptions.min_lambda", "is ", min_lambda, ", outside (0, 1]: it is a fraction of the leaves");
   if (top_views < 0 || top_views > 16) FailOption("LodBenchOptions.top_views", "is ", top_views, ", not in 0..16");
+  if (!asset.empty() && !std::filesystem::is_regular_file(asset))
+    FailOption("LodBenchOptions.asset", "is ", asset.string(), ", which is not a file");
   if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
 }
 
@@ -226,6 +244,12 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
     result.vmi_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
+  std::unique_ptr<TreeRenderer> asset;
+  if (!options.asset.empty()) {
+    asset = std::make_unique<TreeRenderer>(ReadAsset(options.asset));
+    result.methods.push_back("asset");
+  }
+
   const size_t texture_bytes = TextureBytes(mesh);
   for (size_t s = 0; s < options.sizes.size(); ++s) {
     const int size = options.sizes[s];
@@ -240,6 +264,27 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
       row.size = size;
       std::vector<LodFrame> frames;
       TreeMesh drawn;
+      if (method == "asset") {
+        TreeRenderOptions render_options;
+        render_options.lod_history = false;  // every view on its own, independent of the order
+        Pooled pooled;
+        size_t cells = 0;
+        for (size_t v = 0; v < at.size(); ++v) {
+          FrameStats stats;
+          LodFrame frame;
+          frame.foreground = asset->Render(at[v], render_options, &stats);
+          frame.draw_ms = stats.frame_ms;
+          cells += stats.cells;
+          AddView(pooled, frame, references[v].foreground, /*straight=*/true);
+        }
+        row.triangles = 2 * cells / at.size();
+        row.geometry_bytes = asset->GpuBytes().buffers;
+        row.texture_bytes = asset->GpuBytes().atlas;
+        FillQuality(row, pooled);
+        row.fragments = -1;
+        result.rows.push_back(row);
+        continue;
+      }
       if (method == "full") {
         drawn = mesh;
         row.leaves = leaves.size();
@@ -264,15 +309,7 @@ LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, c
       row.triangles = drawn.TriangleCount();
       row.geometry_bytes = GeometryBytes(drawn);
       row.texture_bytes = texture_bytes;
-      const Pooled pooled = pool(frames, references);
-      row.precision = pooled.coverage.Precision();
-      row.recall = pooled.coverage.Recall();
-      row.pr_score = PrScore(row.precision, row.recall);
-      row.multiscale_rms = pooled.multiscale_rms / pooled.views;
-      row.rgb_psnr = PsnrFromMse(pooled.rgb_mse / pooled.views, 255);
-      row.alpha_psnr = PsnrFromMse(pooled.alpha_mse / pooled.views, 255);
-      row.draw_ms = Median(pooled.draw_ms);
-      row.fragments = pooled.fragments < 0 ? -1 : pooled.fragments / pooled.views;
+      FillQuality(row, pool(frames, references));
       result.rows.push_back(row);
     }
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ struct LodBenchOptions {
   int top_views = 2;         // views from 80 degrees above the horizon, besides the held-out ring
   // Neubert's preprocessing: on the studio's input views (up to this many), at each size.
   int preprocess_views = 6;
+  // A .vtree asset of the same tree, in the mesh's frame (as the studio and reconstruction make
+  // it), drawn by the asset renderer (render/tree_renderer.h, its own LOD) as the row "asset";
+  // empty: none.
+  std::filesystem::path asset;
 
   // Throws OptionError naming the field (sizes outside [8, frame height], min_lambda outside (0, 1]).
   void Check() const;
@@ -80,7 +85,8 @@ struct LodBenchResult {
 // The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"
 // (lambda, s = 1 / lambda), "neubert" (lambda, PR-optimal s) and "vmi" (lambda, leaves removed
 // in the VMI order, each removal growing its nearest leaf; area_scale is the mean). Needs a GL
-// context of its own.
+// context of its own. With options.asset, also "asset": triangles are 2 per cell drawn, GPU bytes
+// its buffers and DXT5 atlas, draw time the renderer's frame time, fragments not measured.
 LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
                            Progress& progress);
 

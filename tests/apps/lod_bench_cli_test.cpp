@@ -10,7 +10,9 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/vtree.h"
 #include "pipeline/voltree_binary.h"
+#include "render/test_assets.h"
 
 namespace voltree {
 namespace {
@@ -91,6 +93,27 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
   const test::Outcome refused = Run("--sizes 48 -o out");
   EXPECT_NE(refused.status, 0);
   EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
+}
+
+// The asset row: a hand-made asset (white cells over the tree's place) drawn at every size.
+TEST_F(LodBenchCli, AnAssetGetsARowAtEverySize) {
+  WriteAsset(dir_ / "white.vtree", test::WhiteAsset());
+  const test::Outcome outcome = Run("--sizes 48,24 --asset white.vtree -o out");
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const nlohmann::json json = nlohmann::json::parse(ReadFile(dir_ / "out" / "lod_bench.json"));
+  std::set<int> sizes;
+  for (const auto& row : json["rows"]) {
+    if (row["method"] != "asset") continue;
+    sizes.insert(row["size"].get<int>());
+    EXPECT_GT(row["triangles"].get<int>(), 0) << row;
+    EXPECT_GT(row["texture_bytes"].get<int>(), 0) << row;
+    EXPECT_GE(row["precision"].get<double>(), 0.0) << row;
+    EXPECT_LE(row["recall"].get<double>(), 1.0) << row;
+  }
+  EXPECT_EQ(sizes, (std::set<int>{48, 24}));
+  const test::Outcome missing = Run("--sizes 48 --asset nowhere.vtree -o other");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.output.find("--asset"), std::string::npos) << missing.output;
 }
 
 TEST_F(LodBenchCli, BadFlagsAreNamed) {
