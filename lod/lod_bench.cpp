@@ -7,7 +7,6 @@
 #include <map>
 #include <memory>
 #include <numbers>
-#include <set>
 
 #include "core/error.h"
 #include "core/image_metrics.h"
@@ -145,175 +144,216 @@ void LodBenchOptions::Check() const {
   if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
 }
 
-LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
-                           Progress& progress) {
-  options.Check();
-  mesh.Check();
-  LodBenchResult result;
-  result.tree = tree_name;
-  result.triangle_count = mesh.TriangleCount();
-  const std::vector<Leaf> leaves = SeparateLeaves(mesh);
-  result.leaf_count = leaves.size();
-  result.leaf_area = TotalLeafArea(leaves);
-  const std::vector<uint32_t> order = RandomLeafOrder(leaves.size(), options.seed);
-  result.methods = {"full"};
-  if (leaves.empty())
-    result.notes.push_back(
-        "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook and neubert need "
-        "leaves; vmi too; only the full mesh was measured");
-  else
-    result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
+namespace {
 
-  const int frame = std::min(options.studio.width, options.studio.height);
-  std::vector<double> lambdas;  // per size
-  for (int size : options.sizes) lambdas.push_back(LambdaForScreenSize(size, frame, options.min_lambda));
+// One bench run: the mesh, its leaves and priority order, the GL renderer and the cameras.
+class LodBench {
+ public:
+  LodBench(const TreeMesh& mesh, const LodBenchOptions& options)
+      : options_(options),
+        mesh_(mesh),
+        leaves_(SeparateLeaves(mesh)),
+        order_(RandomLeafOrder(leaves_.size(), options.seed)),
+        frame_(std::min(options.studio.width, options.studio.height)),
+        supersample_(options.studio.supersample),
+        // Scaled leaves reach past the mesh's bounds: the largest candidate scale is lambda^-1.3.
+        draw_bounds_(GrownBounds(mesh, std::pow(options.min_lambda, -1.3))),
+        renderer_(options.studio, draw_bounds_.first, draw_bounds_.second),
+        rig_(MakeStudioRig(mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio)),
+        views_(BenchViews(rig_, mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio,
+                          options.top_views)),
+        full_(mesh) {
+    for (int size : options.sizes) lambdas_.push_back(LambdaForScreenSize(size, frame_, options.min_lambda));
+  }
 
-  const auto [mesh_lo, mesh_hi] = mesh.Bounds();
-  const double max_scale = std::pow(options.min_lambda, -1.3);
-  const auto [lo, hi] = GrownBounds(mesh, max_scale);
-  LodViewRenderer renderer(options.studio, lo, hi);
-  result.renderer = renderer.context().renderer();
-  result.fragments_available = renderer.counts_fragments();
-  const StudioRig rig = MakeStudioRig(mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio);
-  const std::vector<View> views =
-      BenchViews(rig, mesh_lo.cast<double>(), mesh_hi.cast<double>(), options.studio, options.top_views);
-  result.views = static_cast<int>(views.size());
-  const StudioTreeRenderer full(mesh);
+  LodBenchResult Run(const std::string& tree_name, Progress& progress) {
+    LodBenchResult result;
+    result.tree = tree_name;
+    result.triangle_count = mesh_.TriangleCount();
+    result.leaf_count = leaves_.size();
+    result.leaf_area = TotalLeafArea(leaves_);
+    result.renderer = renderer_.context().renderer();
+    result.fragments_available = renderer_.counts_fragments();
+    result.views = static_cast<int>(views_.size());
+    result.methods = {"full"};
+    if (leaves_.empty()) {
+      result.notes.push_back(
+          "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook, neubert and vmi "
+          "need leaves; only the full mesh was measured");
+    } else {
+      result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
+      SearchOptimalScales(result, progress);
+      RankByVmi(result, progress);
+    }
+    if (!options_.asset.empty()) {
+      asset_ = std::make_unique<TreeRenderer>(ReadAsset(options_.asset));
+      result.methods.push_back("asset");
+    }
+    for (size_t s = 0; s < options_.sizes.size(); ++s) {
+      const int size = options_.sizes[s];
+      progress.Say("lod-bench", Str(size, " px: lambda ", lambdas_[s]));
+      const std::vector<View> at = AtSize(views_, size);
+      const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      for (const std::string& method : result.methods)
+        result.rows.push_back(method == "asset" ? MeasureAsset(size, at, references)
+                                                : MeasureMethod(method, size, lambdas_[s], at, references));
+    }
+    return result;
+  }
 
+ private:
   // Methods are drawn as a renderer would draw them at that size (the bench's supersampling);
   // the reference is the full mesh sampled as finely as in the frame, so that sub-pixel leaves
   // count with the coverage they have instead of vanishing into the alpha-tested texture's
   // coarse mip levels.
-  const int supersample = options.studio.supersample;
-  const auto reference_supersample = [&](int size) {
-    return std::max(supersample, static_cast<int>(std::lround(static_cast<double>(frame) * supersample / size)));
-  };
-  const auto render_all = [&](const StudioTreeRenderer& tree, const std::vector<View>& at, int samples) {
+  int ReferenceSupersample(int size) const {
+    return std::max(supersample_, static_cast<int>(std::lround(static_cast<double>(frame_) * supersample_ / size)));
+  }
+
+  std::vector<LodFrame> RenderAll(const StudioTreeRenderer& tree, const std::vector<View>& at, int samples) {
     std::vector<LodFrame> frames;
-    for (const View& view : at) frames.push_back(renderer.Render(tree, view, samples));
+    for (const View& view : at) frames.push_back(renderer_.Render(tree, view, samples));
     return frames;
-  };
-  const auto pool = [&](const std::vector<LodFrame>& frames, const std::vector<LodFrame>& references) {
+  }
+
+  static Pooled Pool(const std::vector<LodFrame>& frames, const std::vector<LodFrame>& references) {
     Pooled pooled;
     for (size_t v = 0; v < frames.size(); ++v) AddView(pooled, frames[v], references[v].foreground);
     return pooled;
-  };
+  }
 
   // Neubert's preprocessing: the PR-optimal scale for each size's lambda, on the input views at
   // that size. (The paper tabulates over lambda alone, PR being invariant to screen size for its
   // renderer; here alpha-tested leaves lose coverage in coarse mip levels, so it is not.)
-  std::map<int, double> optimal_scale;  // by size
-  if (!leaves.empty()) {
+  void SearchOptimalScales(LodBenchResult& result, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<View> training;
-    const size_t step = std::max<size_t>(1, rig.inputs.size() / options.preprocess_views);
-    for (size_t i = 0; i < rig.inputs.size() && training.size() < static_cast<size_t>(options.preprocess_views);
+    const size_t step = std::max<size_t>(1, rig_.inputs.size() / options_.preprocess_views);
+    for (size_t i = 0; i < rig_.inputs.size() && training.size() < static_cast<size_t>(options_.preprocess_views);
          i += step)
-      training.push_back(rig.inputs[i]);
-    for (size_t s = 0; s < options.sizes.size(); ++s) {
-      const int size = options.sizes[s];
-      progress.Step("neubert scales", s, options.sizes.size());
-      if (optimal_scale.count(size)) continue;
+      training.push_back(rig_.inputs[i]);
+    for (size_t s = 0; s < options_.sizes.size(); ++s) {
+      const int size = options_.sizes[s];
+      progress.Step("neubert scales", s, options_.sizes.size());
+      if (optimal_scale_.count(size)) continue;
       const std::vector<View> at = AtSize(training, size);
-      const std::vector<LodFrame> references = render_all(full, at, reference_supersample(size));
+      const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
       ScaleSearch search;
       search.size = size;
-      search.lambda = lambdas[s];
+      search.lambda = lambdas_[s];
       for (double scale : CandidateAreaScales(search.lambda)) {
-        const StudioTreeRenderer tree(BuildPrunedMesh(mesh, leaves, PruneLeaves(order, search.lambda, scale)));
-        const Pooled pooled = pool(render_all(tree, at, supersample), references);
+        const StudioTreeRenderer tree(BuildPrunedMesh(mesh_, leaves_, PruneLeaves(order_, search.lambda, scale)));
+        const Pooled pooled = Pool(RenderAll(tree, at, supersample_), references);
         search.trials.push_back({scale, pooled.coverage.Precision(), pooled.coverage.Recall()});
       }
       search.best = BestScaleTrial(search.trials);
-      optimal_scale[size] = search.best.area_scale;
+      optimal_scale_[size] = search.best.area_scale;
       result.scale_searches.push_back(search);
     }
-    progress.Step("neubert scales", options.sizes.size(), options.sizes.size());
+    progress.Step("neubert scales", options_.sizes.size(), options_.sizes.size());
     result.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   // The VMI removal sequence, down to the fewest leaves any size keeps, from the input views.
-  std::vector<VmiRemoval> vmi_sequence;
-  if (!leaves.empty()) {
+  void RankByVmi(LodBenchResult& result, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    progress.Say("vmi", Str("ranking ", leaves.size(), " leaves from ", rig.inputs.size(), " views"));
-    size_t keep = leaves.size();
-    for (double lambda : lambdas) keep = std::min(keep, KeptLeafCount(leaves.size(), lambda));
-    LeafIdRenderer ids(mesh, leaves);
-    vmi_sequence = VmiRemovalSequence(ids, leaves.size(), AtSize(rig.inputs, kVmiSize), keep);
+    progress.Say("vmi", Str("ranking ", leaves_.size(), " leaves from ", rig_.inputs.size(), " views"));
+    size_t keep = leaves_.size();
+    for (double lambda : lambdas_) keep = std::min(keep, KeptLeafCount(leaves_.size(), lambda));
+    LeafIdRenderer ids(mesh_, leaves_);
+    vmi_sequence_ = VmiRemovalSequence(ids, leaves_.size(), AtSize(rig_.inputs, kVmiSize), keep);
     result.vmi_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  std::unique_ptr<TreeRenderer> asset;
-  if (!options.asset.empty()) {
-    asset = std::make_unique<TreeRenderer>(ReadAsset(options.asset));
-    result.methods.push_back("asset");
+  // The leaves a pruning method draws at `lambda`, and the area scale the row reports.
+  std::vector<LeafDraw> Draws(const std::string& method, int size, double lambda, double* area_scale) const {
+    if (method == "vmi") {
+      std::vector<LeafDraw> draws =
+          VmiLeafDraws(leaves_, vmi_sequence_, leaves_.size() - KeptLeafCount(leaves_.size(), lambda));
+      double sum = 0;
+      for (const LeafDraw& draw : draws) sum += draw.area_scale;
+      *area_scale = sum / static_cast<double>(std::max<size_t>(draws.size(), 1));  // mean: each leaf has its own
+      return draws;
+    }
+    *area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale_.at(size);
+    return PruneLeaves(order_, lambda, *area_scale);
   }
 
-  const size_t texture_bytes = TextureBytes(mesh);
-  for (size_t s = 0; s < options.sizes.size(); ++s) {
-    const int size = options.sizes[s];
-    const double lambda = lambdas[s];
-    progress.Say("lod-bench", Str(size, " px: lambda ", lambda));
-    const std::vector<View> at = AtSize(views, size);
-    const int fine = reference_supersample(size);
-    const std::vector<LodFrame> references = render_all(full, at, fine);
-    for (const std::string& method : result.methods) {
-      LodBenchRow row;
-      row.method = method;
-      row.size = size;
-      std::vector<LodFrame> frames;
-      TreeMesh drawn;
-      if (method == "asset") {
-        TreeRenderOptions render_options;
-        render_options.lod_history = false;  // every view on its own, independent of the order
-        Pooled pooled;
-        size_t cells = 0;
-        for (size_t v = 0; v < at.size(); ++v) {
-          FrameStats stats;
-          LodFrame frame;
-          frame.foreground = asset->Render(at[v], render_options, &stats);
-          frame.draw_ms = stats.frame_ms;
-          cells += stats.cells;
-          AddView(pooled, frame, references[v].foreground, /*straight=*/true);
-        }
-        row.triangles = 2 * cells / at.size();
-        row.geometry_bytes = asset->GpuBytes().buffers;
-        row.texture_bytes = asset->GpuBytes().atlas;
-        FillQuality(row, pooled);
-        row.fragments = -1;
-        result.rows.push_back(row);
-        continue;
-      }
-      if (method == "full") {
-        drawn = mesh;
-        row.leaves = leaves.size();
-        frames = fine == supersample ? references : render_all(full, at, supersample);
-      } else {
-        row.lambda = lambda;
-        std::vector<LeafDraw> draws;
-        if (method == "vmi") {
-          draws = VmiLeafDraws(leaves, vmi_sequence, leaves.size() - KeptLeafCount(leaves.size(), lambda));
-          double sum = 0;
-          for (const LeafDraw& draw : draws) sum += draw.area_scale;
-          row.area_scale = sum / static_cast<double>(std::max<size_t>(draws.size(), 1));  // mean: each leaf has its own
-        } else {
-          row.area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale.at(size);
-          draws = PruneLeaves(order, lambda, row.area_scale);
-        }
-        row.leaves = draws.size();
-        drawn = BuildPrunedMesh(mesh, leaves, draws);
-        const StudioTreeRenderer tree(drawn);
-        frames = render_all(tree, at, supersample);
-      }
-      row.triangles = drawn.TriangleCount();
-      row.geometry_bytes = GeometryBytes(drawn);
-      row.texture_bytes = texture_bytes;
-      FillQuality(row, pool(frames, references));
-      result.rows.push_back(row);
+  LodBenchRow MeasureMethod(const std::string& method, int size, double lambda, const std::vector<View>& at,
+                            const std::vector<LodFrame>& references) {
+    LodBenchRow row;
+    row.method = method;
+    row.size = size;
+    std::vector<LodFrame> frames;
+    TreeMesh pruned;
+    const TreeMesh* drawn = &mesh_;
+    if (method == "full") {
+      row.leaves = leaves_.size();
+      frames = ReferenceSupersample(size) == supersample_ ? references : RenderAll(full_, at, supersample_);
+    } else {
+      row.lambda = lambda;
+      const std::vector<LeafDraw> draws = Draws(method, size, lambda, &row.area_scale);
+      row.leaves = draws.size();
+      pruned = BuildPrunedMesh(mesh_, leaves_, draws);
+      drawn = &pruned;
+      const StudioTreeRenderer tree(pruned);
+      frames = RenderAll(tree, at, supersample_);
     }
+    row.triangles = drawn->TriangleCount();
+    row.geometry_bytes = GeometryBytes(*drawn);
+    row.texture_bytes = TextureBytes(mesh_);
+    FillQuality(row, Pool(frames, references));
+    return row;
   }
-  return result;
+
+  LodBenchRow MeasureAsset(int size, const std::vector<View>& at, const std::vector<LodFrame>& references) {
+    LodBenchRow row;
+    row.method = "asset";
+    row.size = size;
+    TreeRenderOptions render_options;
+    render_options.lod_history = false;  // every view on its own, independent of the order
+    Pooled pooled;
+    size_t cells = 0;
+    for (size_t v = 0; v < at.size(); ++v) {
+      FrameStats stats;
+      LodFrame frame;
+      frame.foreground = asset_->Render(at[v], render_options, &stats);
+      frame.draw_ms = stats.frame_ms;
+      cells += stats.cells;
+      AddView(pooled, frame, references[v].foreground, /*straight=*/true);
+    }
+    row.triangles = 2 * cells / std::max<size_t>(at.size(), 1);
+    row.geometry_bytes = asset_->GpuBytes().buffers;
+    row.texture_bytes = asset_->GpuBytes().atlas;
+    FillQuality(row, pooled);
+    row.fragments = -1;  // not measured for the asset renderer
+    return row;
+  }
+
+  const LodBenchOptions& options_;
+  const TreeMesh& mesh_;
+  const std::vector<Leaf> leaves_;
+  const std::vector<uint32_t> order_;
+  const int frame_, supersample_;
+  std::vector<double> lambdas_;  // per size
+  const std::pair<Eigen::Vector3d, Eigen::Vector3d> draw_bounds_;
+  LodViewRenderer renderer_;  // its GL context is current for every GL object below
+  const StudioRig rig_;
+  const std::vector<View> views_;
+  const StudioTreeRenderer full_;
+  std::map<int, double> optimal_scale_;  // by size
+  std::vector<VmiRemoval> vmi_sequence_;
+  std::unique_ptr<TreeRenderer> asset_;
+};
+
+}  // namespace
+
+LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
+                           Progress& progress) {
+  options.Check();
+  mesh.Check();
+  LodBench bench(mesh, options);
+  return bench.Run(tree_name, progress);
 }
 
 }  // namespace voltree
