@@ -37,11 +37,14 @@ std::string LodBenchTable(const LodBenchResult& result) {
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const LodBenchRow& row : result.rows) {
     const std::string fragments = row.fragments < 0 ? "not available" : std::to_string(row.fragments);
-    text += Str("| ", row.method, " | ", row.size, " | ", Fixed(row.lambda, 4), " | ", Fixed(row.area_scale, 2), " | ",
-                row.leaves, " | ", row.triangles, " | ", Fixed((row.geometry_bytes + row.texture_bytes) / 1024.0, 0),
-                " | ", Fixed(row.draw_ms, 2), " | ", fragments, " | ", Fixed(row.precision, 4), " | ",
-                Fixed(row.recall, 4), " | ", Fixed(row.pr_score, 4), " | ", Fixed(row.multiscale_rms, 4), " | ",
-                Fixed(row.rgb_psnr, 2), " | ", Fixed(row.alpha_psnr, 2), " |\n");
+    // The asset has cells and billboards, not leaves: no lambda, scale or leaf count.
+    const bool asset = row.method == "asset";
+    text += Str("| ", row.method, " | ", row.size, " | ", asset ? "-" : Fixed(row.lambda, 4), " | ",
+                asset ? "-" : Fixed(row.area_scale, 2), " | ", asset ? "-" : std::to_string(row.leaves), " | ",
+                row.triangles, " | ", Fixed((row.geometry_bytes + row.texture_bytes) / 1024.0, 0), " | ",
+                Fixed(row.draw_ms, 2), " | ", fragments, " | ", Fixed(row.precision, 4), " | ", Fixed(row.recall, 4),
+                " | ", Fixed(row.pr_score, 4), " | ", Fixed(row.multiscale_rms, 4), " | ", Fixed(row.rgb_psnr, 2),
+                " | ", Fixed(row.alpha_psnr, 2), " |\n");
   }
   if (!result.scale_searches.empty()) {
     text += Str("\n## Neubert's PR-optimal scale (preprocessing on the input views, ",
@@ -76,12 +79,14 @@ std::string LodBenchTable(const LodBenchResult& result) {
 
 std::string LodBenchJson(const LodBenchResult& result) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const LodBenchRow& row : result.rows)
+  for (const LodBenchRow& row : result.rows) {
+    const bool asset = row.method == "asset";
+    const auto leafy = [asset](const nlohmann::json& value) { return asset ? nlohmann::json(nullptr) : value; };
     rows.push_back({{"method", row.method},
                     {"size", row.size},
-                    {"lambda", row.lambda},
-                    {"area_scale", row.area_scale},
-                    {"leaves", row.leaves},
+                    {"lambda", leafy(row.lambda)},
+                    {"area_scale", leafy(row.area_scale)},
+                    {"leaves", leafy(row.leaves)},
                     {"triangles", row.triangles},
                     {"geometry_bytes", row.geometry_bytes},
                     {"texture_bytes", row.texture_bytes},
@@ -93,6 +98,7 @@ std::string LodBenchJson(const LodBenchResult& result) {
                     {"multiscale_rms", row.multiscale_rms},
                     {"rgb_psnr", Number(row.rgb_psnr)},
                     {"alpha_psnr", Number(row.alpha_psnr)}});
+  }
   nlohmann::json searches = nlohmann::json::array();
   for (const ScaleSearch& search : result.scale_searches) {
     nlohmann::json trials = nlohmann::json::array();
