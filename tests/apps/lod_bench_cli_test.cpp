@@ -116,6 +116,19 @@ TEST_F(LodBenchCli, AnAssetGetsARowAtEverySize) {
   EXPECT_NE(missing.output.find("--asset"), std::string::npos) << missing.output;
 }
 
+// A mesh without a leaf material: only the full mesh is measured, and the table says why.
+TEST_F(LodBenchCli, AMeshWithoutLeavesGetsTheFullRowsAndANote) {
+  WriteFileAtomic(dir_ / "trunk.obj", "v -0.05 0 0\nv 0.05 0 0\nv 0.05 0 1\nv -0.05 0 1\nf 1 2 3\nf 1 3 4\n");
+  const test::Outcome outcome = test::VoltreeCaptured(
+      "lod-bench trunk.obj --mesh-up z --size 32 --sizes 32,16 --held-out 2 --top-views 0 --quiet -o out",
+      dir_.string());
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const nlohmann::json json = nlohmann::json::parse(ReadFile(dir_ / "out" / "lod_bench.json"));
+  EXPECT_EQ(json["methods"], nlohmann::json::array({"full"}));
+  EXPECT_EQ(json["rows"].size(), 2u);
+  EXPECT_NE(ReadFile(dir_ / "out" / "table.md").find("need leaves"), std::string::npos);
+}
+
 TEST_F(LodBenchCli, BadFlagsAreNamed) {
   const test::Outcome too_big = Run("--sizes 48,96 -o out");
   EXPECT_NE(too_big.status, 0);
