@@ -137,10 +137,11 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
     progress.Say("lod-bench", "no plots: " + why_not);
     return;
   }
-  std::map<std::string, PlotSeries> by_cost, by_size;
+  std::map<std::string, PlotSeries> by_cost, by_fragments, by_size;
   for (const LodBenchRow& row : result.rows) {
-    by_cost[row.method].title = by_size[row.method].title = row.method;
+    by_cost[row.method].title = by_fragments[row.method].title = by_size[row.method].title = row.method;
     by_cost[row.method].points.emplace_back(static_cast<double>(row.triangles), row.pr_score);
+    if (row.fragments > 0) by_fragments[row.method].points.emplace_back(row.fragments / 1000.0, row.pr_score);
     by_size[row.method].points.emplace_back(row.size, row.multiscale_rms);
   }
   const auto make_spec = [](const char* file, const char* title, const char* x_label, const char* y_label) {
@@ -156,6 +157,12 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
   rms.log_x = true;
   for (auto& [method, series] : by_cost) cost.series.push_back(series);
   for (auto& [method, series] : by_size) rms.series.push_back(series);
+  // Fragments shaded: what the pixels cost, which llvmpipe's time follows more than triangles.
+  PlotSpec fragments = make_spec("quality_vs_fragments.png", "PR score against fragments shaded (one point per size)",
+                                 "fragments shaded per view (thousands)", "PR score Q = 1 - |(1-P, 1-R)|");
+  fragments.log_x = true;
+  for (auto& [method, series] : by_fragments)
+    if (!series.points.empty()) fragments.series.push_back(series);
 
   // Neubert et al. 2011 fig. 2: one curve per lambda through the candidate scales, and the points
   // that Cook's and the PR-optimal scale choose.
@@ -179,7 +186,7 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
   pr.series.push_back(best);
   const std::filesystem::path plots = folder / "plots";
   std::filesystem::create_directories(plots);
-  for (const PlotSpec& spec : {cost, rms, pr})
+  for (const PlotSpec& spec : {cost, fragments, rms, pr})
     if (spec.HasPoints()) DrawPlot(*gnuplot, spec, plots);
 }
 
