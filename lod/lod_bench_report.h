@@ -1,7 +1,6 @@
 // What `voltree lod-bench` writes: table.md (the measured table and Neubert's scale search),
 // lod_bench.json (the same numbers) and gnuplot plots (quality against triangles and against
-// fragments, the PR diagram of
-// Neubert et al. 2011 fig. 2, multi-scale RMS against screen size).
+// fragments, the PR diagram of Neubert et al. 2011 fig. 2, multi-scale RMS against screen size).
 #pragma once
 
 #include <filesystem>
