@@ -20,5 +20,6 @@ void AddWebCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
 void AddBatchCommand(CLI::App& app);
 void AddSceneCommand(CLI::App& app);
+void AddLodBenchCommand(CLI::App& app);
 
 }  // namespace voltree::app

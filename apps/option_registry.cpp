@@ -293,7 +293,10 @@ std::vector<OptionSpec> EvaluateFlags() {
        {"EvaluateOptions.budget"},
        "Also measure what each step costs (the volume, uncompressed billboards, VQ, DXT5, the LOD) at the input "
        "and held-out views; needs DIR/volume; adds a table to the report and metrics.json"},
-      {"--asset", {"EvaluateOptions.asset"}, "The asset to evaluate (default: DIR/tree.vtree)"},
+      {"--asset",
+       {"EvaluateOptions.asset", "LodBenchOptions.asset"},
+       "The .vtree asset to measure (eval: default DIR/tree.vtree; lod-bench: drawn as an extra row, none by "
+       "default)"},
       {"--report",
        {"EvaluateOptions.report"},
        "Report folder (default: DIR/report); its other files (contact sheet, orbit/) are kept"},
@@ -306,11 +309,28 @@ std::vector<OptionSpec> EvaluateFlags() {
   };
 }
 
+// The LOD bench (lod-bench).
+std::vector<OptionSpec> LodBenchFlags() {
+  return {
+      {"--sizes",
+       {"LodBenchOptions.sizes"},
+       "Comma-separated screen sizes: the tree framed as in the studio's photos, in an image this many pixels tall "
+       "(8 to the frame's height, --size)"},
+      {"--min-lambda",
+       {"LodBenchOptions.min_lambda"},
+       "The smallest fraction of leaves a size keeps, in (0, 1]; lambda = max(this, (size / frame)^2)"},
+      {"--prune-seed", {"LodBenchOptions.seed"}, "Seed of the leaves' random pruning order"},
+      {"--top-views",
+       {"LodBenchOptions.top_views"},
+       "Views from 80 degrees above the horizon, besides the held-out ring (0..16)"},
+  };
+}
+
 // Grouped by the stage whose options they set; within a group, in the order of --help.
 std::vector<OptionSpec> MakeRegistry() {
   std::vector<OptionSpec> registry;
   for (auto group : {CommandFlags, TreeFlags, StudioFlags, CalibrateFlags, MatteFlags, ReconstructFlags, CompressFlags,
-                     RenderFlags, RunFlags, BatchFlags, ViewerFlags, EvaluateFlags})
+                     RenderFlags, RunFlags, BatchFlags, ViewerFlags, EvaluateFlags, LodBenchFlags})
     for (OptionSpec& spec : group()) registry.push_back(std::move(spec));
   return registry;
 }

@@ -33,6 +33,7 @@ std::unique_ptr<CLI::App> MakeVoltreeApp() {
   AddRunCommand(*app);
   AddBatchCommand(*app);
   AddSceneCommand(*app);
+  AddLodBenchCommand(*app);
   AddWebCommand(*app);
   AddViewCommand(*app);
   return app;

@@ -1,0 +1,359 @@
+#include "lod/lod_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numbers>
+
+#include "core/error.h"
+#include "core/image_metrics.h"
+#include "core/vtree.h"
+#include "render/tree_renderer.h"
+#include "lod/leaf_separation.h"
+#include "lod/lod_view_renderer.h"
+#include "lod/pruned_mesh.h"
+#include "lod/screen_size_rule.h"
+#include "lod/stochastic_pruning.h"
+#include "lod/vmi_pruning.h"
+#include "lod/leaf_id_renderer.h"
+#include "samples/studio_rig.h"
+#include "samples/studio_tree_renderer.h"
+
+namespace voltree {
+namespace {
+
+constexpr double kTopElevationDegrees = 80;
+constexpr int kVmiSize = 256;                        // the id renders' size, as the VMI paper's
+constexpr size_t kVertexBytes = 11 * sizeof(float);  // position, normal, uv, tint as the studio uploads them
+
+// The views: the held-out ring, plus `top_views` from high above at azimuths spread evenly, far
+// enough that the bounding sphere fits the frame.
+std::vector<View> BenchViews(const StudioRig& rig, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             const StudioOptions& studio, int top_views) {
+  std::vector<View> views = rig.held_out;
+  const double radius = std::max(0.5 * (hi - lo).norm(), 1e-3);
+  const double half_angle =
+      std::atan(std::tan(0.5 * studio.fov_degrees * std::numbers::pi / 180) * (1 - studio.margin));
+  const double distance = std::max(rig.distance, radius / std::sin(half_angle));
+  const double elevation = kTopElevationDegrees * std::numbers::pi / 180;
+  for (int k = 0; k < top_views; ++k) {
+    const double azimuth = 2 * std::numbers::pi * (k + 0.125) / top_views;
+    const Eigen::Vector3d direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                                    std::sin(elevation));
+    View view;
+    view.name = "top_" + std::to_string(k);
+    view.camera = rig.held_out.empty() ? MakeStudioCamera(studio) : rig.held_out.front().camera;
+    view.pose = Pose::LookAt(rig.target + distance * direction, rig.target, Eigen::Vector3d::UnitZ());
+    views.push_back(view);
+  }
+  return views;
+}
+
+// The same views in an image `size` pixels tall (the tree framed the same way, smaller).
+std::vector<View> AtSize(std::vector<View> views, int size) {
+  for (View& view : views) {
+    const double factor = static_cast<double>(size) / view.camera.height;
+    view.camera = view.camera.Resized(std::max(1, static_cast<int>(std::lround(view.camera.width * factor))), size);
+  }
+  return views;
+}
+
+size_t TextureBytes(const TreeMesh& mesh) {
+  size_t bytes = 0;
+  for (const Image8& texture : mesh.textures) bytes += texture.pixels.size() * 4 / std::max(texture.channels, 1);
+  return bytes;
+}
+
+size_t GeometryBytes(const TreeMesh& mesh) {
+  return mesh.vertices.size() * kVertexBytes + mesh.TriangleCount() * 3 * sizeof(uint32_t);
+}
+
+// Metrics of renders against references, views pooled.
+struct Pooled {
+  CoverageCounts coverage;
+  double rgb_mse = 0, alpha_mse = 0, multiscale_rms = 0;
+  std::vector<double> draw_ms;
+  int64_t fragments = 0;
+  int views = 0;
+};
+
+double MseFromPsnr(double psnr) { return std::isinf(psnr) ? 0.0 : 255.0 * 255.0 / std::pow(10.0, psnr / 10); }
+
+// `straight`: the render has straight alpha (the asset renderer's); references are premultiplied.
+void AddView(Pooled& pooled, const LodFrame& frame, const Image8& reference, bool straight = false) {
+  ImageMetricsOptions options;
+  options.render_premultiplied = !straight;
+  options.truth_premultiplied = true;
+  const ViewMetrics metrics = CompareViews(frame.foreground, reference, options);
+  pooled.coverage.true_positives += metrics.coverage.true_positives;
+  pooled.coverage.false_positives += metrics.coverage.false_positives;
+  pooled.coverage.false_negatives += metrics.coverage.false_negatives;
+  pooled.rgb_mse += MseFromPsnr(metrics.rgb_psnr);
+  pooled.alpha_mse += MseFromPsnr(metrics.alpha_psnr);
+  pooled.multiscale_rms += metrics.multiscale_rms;
+  pooled.draw_ms.push_back(frame.draw_ms);
+  pooled.fragments = frame.fragments < 0 || pooled.fragments < 0 ? -1 : pooled.fragments + frame.fragments;
+  ++pooled.views;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The row's quality, draw time and fragments from the pooled views.
+void FillQuality(LodBenchRow& row, const Pooled& pooled) {
+  row.precision = pooled.coverage.Precision();
+  row.recall = pooled.coverage.Recall();
+  row.pr_score = PrScore(row.precision, row.recall);
+  row.multiscale_rms = pooled.multiscale_rms / pooled.views;
+  row.rgb_psnr = PsnrFromMse(pooled.rgb_mse / pooled.views, 255);
+  row.alpha_psnr = PsnrFromMse(pooled.alpha_mse / pooled.views, 255);
+  row.draw_ms = Median(pooled.draw_ms);
+  row.fragments = pooled.fragments < 0 ? -1 : pooled.fragments / pooled.views;
+}
+
+// The box that holds the mesh with its leaves scaled by up to `max_area_scale` about their centres.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> GrownBounds(const TreeMesh& mesh, double max_area_scale) {
+  const auto [lo, hi] = mesh.Bounds();
+  const Eigen::Vector3d pad =
+      Eigen::Vector3d::Constant(0.5 * std::sqrt(max_area_scale) * (hi - lo).cast<double>().norm() * 0.1);
+  return {lo.cast<double>() - pad, hi.cast<double>() + pad};
+}
+
+}  // namespace
+
+void LodBenchOptions::Check() const {
+  studio.Check();
+  if (sizes.empty()) FailOption("LodBenchOptions.sizes", "is empty: give at least one screen size");
+  const int frame = std::min(studio.width, studio.height);
+  for (int size : sizes)
+    if (size < 8 || size > frame)
+      FailOption("LodBenchOptions.sizes", "has ", size, " px, outside the frame: sizes go from 8 to the frame's ",
+                 frame, " px");
+  if (!(min_lambda > 0 && min_lambda <= 1))
+    FailOption("LodBenchOptions.min_lambda", "is ", min_lambda, ", outside (0, 1]: it is a fraction of the leaves");
+  if (top_views < 0 || top_views > 16) FailOption("LodBenchOptions.top_views", "is ", top_views, ", not in 0..16");
+  if (!asset.empty() && !std::filesystem::is_regular_file(asset))
+    FailOption("LodBenchOptions.asset", "is ", asset.string(), ", which is not a file");
+  if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
+}
+
+namespace {
+
+// One bench run: the mesh, its leaves and priority order, the GL renderer and the cameras.
+class LodBench {
+ public:
+  LodBench(const TreeMesh& mesh, const LodBenchOptions& options)
+      : options_(options),
+        mesh_(mesh),
+        leaves_(SeparateLeaves(mesh)),
+        order_(RandomLeafOrder(leaves_.size(), options.seed)),
+        frame_(std::min(options.studio.width, options.studio.height)),
+        supersample_(options.studio.supersample),
+        // Scaled leaves reach past the mesh's bounds: the largest candidate scale is lambda^-1.3.
+        draw_bounds_(GrownBounds(mesh, std::pow(options.min_lambda, -1.3))),
+        renderer_(options.studio, draw_bounds_.first, draw_bounds_.second),
+        rig_(MakeStudioRig(mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio)),
+        views_(BenchViews(rig_, mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio,
+                          options.top_views)),
+        full_(mesh) {
+    for (int size : options.sizes) lambdas_.push_back(LambdaForScreenSize(size, frame_, options.min_lambda));
+  }
+
+  LodBenchResult Run(const std::string& tree_name, Progress& progress) {
+    LodBenchResult result;
+    result.tree = tree_name;
+    result.triangle_count = mesh_.TriangleCount();
+    result.leaf_count = leaves_.size();
+    result.leaf_area = TotalLeafArea(leaves_);
+    result.renderer = renderer_.context().renderer();
+    result.fragments_available = renderer_.counts_fragments();
+    result.views = static_cast<int>(views_.size());
+    result.methods = {"full"};
+    if (leaves_.empty()) {
+      result.notes.push_back(
+          "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook, neubert and vmi "
+          "need leaves; only the full mesh was measured");
+    } else {
+      result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
+      SearchOptimalScales(result, progress);
+      RankByVmi(result, progress);
+    }
+    if (!options_.asset.empty()) {
+      asset_ = std::make_unique<TreeRenderer>(ReadAsset(options_.asset));
+      result.methods.push_back("asset");
+    }
+    for (size_t s = 0; s < options_.sizes.size(); ++s) {
+      const int size = options_.sizes[s];
+      progress.Say("lod-bench", Str(size, " px: lambda ", lambdas_[s]));
+      const std::vector<View> at = AtSize(views_, size);
+      const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      for (const std::string& method : result.methods)
+        result.rows.push_back(method == "asset" ? MeasureAsset(size, at, references)
+                                                : MeasureMethod(method, size, lambdas_[s], at, references));
+    }
+    return result;
+  }
+
+ private:
+  // Methods are drawn as a renderer would draw them at that size (the bench's supersampling);
+  // the reference is the full mesh sampled as finely as in the frame, so that sub-pixel leaves
+  // count with the coverage they have instead of vanishing into the alpha-tested texture's
+  // coarse mip levels.
+  int ReferenceSupersample(int size) const {
+    return std::max(supersample_, static_cast<int>(std::lround(static_cast<double>(frame_) * supersample_ / size)));
+  }
+
+  std::vector<LodFrame> RenderAll(const StudioTreeRenderer& tree, const std::vector<View>& at, int samples) {
+    std::vector<LodFrame> frames;
+    for (const View& view : at) frames.push_back(renderer_.Render(tree, view, samples));
+    return frames;
+  }
+
+  static Pooled Pool(const std::vector<LodFrame>& frames, const std::vector<LodFrame>& references) {
+    Pooled pooled;
+    for (size_t v = 0; v < frames.size(); ++v) AddView(pooled, frames[v], references[v].foreground);
+    return pooled;
+  }
+
+  // Neubert's preprocessing: the PR-optimal scale for each size's lambda, on the input views at
+  // that size. (The paper tabulates over lambda alone, PR being invariant to screen size for its
+  // renderer; here alpha-tested leaves lose coverage in coarse mip levels, so it is not.)
+  void SearchOptimalScales(LodBenchResult& result, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<View> training;
+    const size_t step = std::max<size_t>(1, rig_.inputs.size() / options_.preprocess_views);
+    for (size_t i = 0; i < rig_.inputs.size() && training.size() < static_cast<size_t>(options_.preprocess_views);
+         i += step)
+      training.push_back(rig_.inputs[i]);
+    for (size_t s = 0; s < options_.sizes.size(); ++s) {
+      const int size = options_.sizes[s];
+      progress.Step("neubert scales", s, options_.sizes.size());
+      if (optimal_scale_.count(size)) continue;
+      const std::vector<View> at = AtSize(training, size);
+      const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      ScaleSearch search;
+      search.size = size;
+      search.lambda = lambdas_[s];
+      for (double scale : CandidateAreaScales(search.lambda)) {
+        const StudioTreeRenderer tree(BuildPrunedMesh(mesh_, leaves_, PruneLeaves(order_, search.lambda, scale)));
+        const Pooled pooled = Pool(RenderAll(tree, at, supersample_), references);
+        search.trials.push_back({scale, pooled.coverage.Precision(), pooled.coverage.Recall()});
+      }
+      search.best = BestScaleTrial(search.trials);
+      optimal_scale_[size] = search.best.area_scale;
+      result.scale_searches.push_back(search);
+    }
+    progress.Step("neubert scales", options_.sizes.size(), options_.sizes.size());
+    result.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The VMI removal sequence, down to the fewest leaves any size keeps, from the input views.
+  void RankByVmi(LodBenchResult& result, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    progress.Say("vmi", Str("ranking ", leaves_.size(), " leaves from ", rig_.inputs.size(), " views"));
+    size_t keep = leaves_.size();
+    for (double lambda : lambdas_) keep = std::min(keep, KeptLeafCount(leaves_.size(), lambda));
+    LeafIdRenderer ids(mesh_, leaves_);
+    vmi_sequence_ = VmiRemovalSequence(ids, leaves_.size(), AtSize(rig_.inputs, kVmiSize), keep);
+    result.vmi_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The leaves a pruning method draws at `lambda`, and the area scale the row reports.
+  std::vector<LeafDraw> Draws(const std::string& method, int size, double lambda, double* area_scale) const {
+    if (method == "vmi") {
+      std::vector<LeafDraw> draws =
+          VmiLeafDraws(leaves_, vmi_sequence_, leaves_.size() - KeptLeafCount(leaves_.size(), lambda));
+      double sum = 0;
+      for (const LeafDraw& draw : draws) sum += draw.area_scale;
+      *area_scale = sum / static_cast<double>(std::max<size_t>(draws.size(), 1));  // mean: each leaf has its own
+      return draws;
+    }
+    *area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale_.at(size);
+    return PruneLeaves(order_, lambda, *area_scale);
+  }
+
+  LodBenchRow MeasureMethod(const std::string& method, int size, double lambda, const std::vector<View>& at,
+                            const std::vector<LodFrame>& references) {
+    LodBenchRow row;
+    row.method = method;
+    row.size = size;
+    std::vector<LodFrame> frames;
+    TreeMesh pruned;
+    const TreeMesh* drawn = &mesh_;
+    if (method == "full") {
+      row.leaves = leaves_.size();
+      frames = ReferenceSupersample(size) == supersample_ ? references : RenderAll(full_, at, supersample_);
+    } else {
+      row.lambda = lambda;
+      const std::vector<LeafDraw> draws = Draws(method, size, lambda, &row.area_scale);
+      row.leaves = draws.size();
+      pruned = BuildPrunedMesh(mesh_, leaves_, draws);
+      drawn = &pruned;
+      const StudioTreeRenderer tree(pruned);
+      frames = RenderAll(tree, at, supersample_);
+    }
+    row.triangles = drawn->TriangleCount();
+    row.geometry_bytes = GeometryBytes(*drawn);
+    row.texture_bytes = TextureBytes(mesh_);
+    FillQuality(row, Pool(frames, references));
+    return row;
+  }
+
+  LodBenchRow MeasureAsset(int size, const std::vector<View>& at, const std::vector<LodFrame>& references) {
+    LodBenchRow row;
+    row.method = "asset";
+    row.size = size;
+    TreeRenderOptions render_options;
+    render_options.lod_history = false;  // every view on its own, independent of the order
+    Pooled pooled;
+    size_t cells = 0;
+    for (size_t v = 0; v < at.size(); ++v) {
+      FrameStats stats;
+      LodFrame frame;
+      frame.foreground = asset_->Render(at[v], render_options, &stats);
+      frame.draw_ms = stats.frame_ms;
+      cells += stats.cells;
+      AddView(pooled, frame, references[v].foreground, /*straight=*/true);
+    }
+    row.triangles = 2 * cells / std::max<size_t>(at.size(), 1);
+    row.geometry_bytes = asset_->GpuBytes().buffers;
+    row.texture_bytes = asset_->GpuBytes().atlas;
+    FillQuality(row, pooled);
+    row.fragments = -1;  // not measured for the asset renderer
+    return row;
+  }
+
+  const LodBenchOptions& options_;
+  const TreeMesh& mesh_;
+  const std::vector<Leaf> leaves_;
+  const std::vector<uint32_t> order_;
+  const int frame_, supersample_;
+  std::vector<double> lambdas_;  // per size
+  const std::pair<Eigen::Vector3d, Eigen::Vector3d> draw_bounds_;
+  LodViewRenderer renderer_;  // its GL context is current for every GL object below
+  const StudioRig rig_;
+  const std::vector<View> views_;
+  const StudioTreeRenderer full_;
+  std::map<int, double> optimal_scale_;  // by size
+  std::vector<VmiRemoval> vmi_sequence_;
+  std::unique_ptr<TreeRenderer> asset_;
+};
+
+}  // namespace
+
+LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
+                           Progress& progress) {
+  options.Check();
+  mesh.Check();
+  LodBench bench(mesh, options);
+  return bench.Run(tree_name, progress);
+}
+
+}  // namespace voltree

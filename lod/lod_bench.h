@@ -1,0 +1,93 @@
+// The LOD bench: the full mesh as the reference, and each leaf-pruning method drawn at a sweep of
+// screen sizes from the studio's held-out ring and from above, measured for cost (leaves and
+// triangles drawn, GPU bytes, draw time, fragments) and for quality against the full mesh at the
+// same size (precision and recall of covered pixels, multi-scale RMS, RGB and alpha PSNR).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/progress.h"
+#include "lod/pr_optimal_scale.h"
+#include "samples/studio_options.h"
+#include "samples/tree_mesh.h"
+
+namespace voltree {
+
+struct LodBenchOptions {
+  // The frame: the largest size, where the tree fills the frame as in the studio's photos
+  // (StudioOptions.width/height, margin, fov), and the rig (held_out, seed, supersample).
+  StudioOptions studio = [] {
+    StudioOptions options;
+    options.supersample = 2;
+    options.backdrop = BackdropStyle::kPlain;
+    return options;
+  }();
+  // Screen sizes: the tree is framed as in the frame, in an image this many pixels tall.
+  std::vector<int> sizes = {512, 256, 128, 64, 32};
+  double min_lambda = 0.01;  // the smallest fraction of leaves any size keeps
+  uint64_t seed = 1;         // the random priority order of the leaves
+  int top_views = 2;         // views from 80 degrees above the horizon, besides the held-out ring
+  // Neubert's preprocessing: on the studio's input views (up to this many), at each size.
+  int preprocess_views = 6;
+  // A .vtree asset of the same tree, in the mesh's frame (as the studio and reconstruction make
+  // it), drawn by the asset renderer (render/tree_renderer.h, its own LOD) as the row "asset";
+  // empty: none.
+  std::filesystem::path asset;
+
+  // Throws OptionError naming the field (sizes outside [8, frame height], min_lambda outside (0, 1]).
+  void Check() const;
+};
+
+// One method at one size, the views pooled (coverage counts summed, squared errors averaged).
+struct LodBenchRow {
+  std::string method;
+  int size = 0;
+  double lambda = 1;      // fraction of leaves drawn
+  double area_scale = 1;  // of each drawn leaf (vmi: their mean)
+  size_t leaves = 0;
+  size_t triangles = 0;
+  size_t geometry_bytes = 0;  // vertex and index buffers
+  size_t texture_bytes = 0;
+  double draw_ms = 0;      // median over the views
+  int64_t fragments = -1;  // mean over the views; -1 not available
+  double precision = 1, recall = 1, pr_score = 1;
+  double multiscale_rms = 0;
+  double rgb_psnr = 0, alpha_psnr = 0;  // +infinity when identical to the reference
+};
+
+// Neubert's preprocessing for one size and its lambda: every candidate scale's PR, and the
+// chosen one.
+struct ScaleSearch {
+  int size = 0;
+  double lambda = 1;
+  std::vector<ScaleTrial> trials;
+  ScaleTrial best;
+};
+
+struct LodBenchResult {
+  std::string tree;
+  std::string renderer;  // the GL renderer's name
+  size_t leaf_count = 0, triangle_count = 0;
+  double leaf_area = 0;
+  int views = 0;  // per size
+  bool fragments_available = false;
+  std::vector<std::string> methods;
+  std::vector<std::string> notes;  // e.g. which methods a mesh without leaves could not run
+  std::vector<LodBenchRow> rows;
+  std::vector<ScaleSearch> scale_searches;
+  double preprocess_seconds = 0;  // Neubert's scale search, all sizes
+  double vmi_seconds = 0;         // the VMI removal sequence
+};
+
+// The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"
+// (lambda, s = 1 / lambda), "neubert" (lambda, PR-optimal s) and "vmi" (lambda, leaves removed
+// in the VMI order, each removal growing its nearest leaf; area_scale is the mean). Needs a GL
+// context of its own. With options.asset, also "asset": triangles are 2 per cell drawn, GPU bytes
+// its buffers and DXT5 atlas, draw time the renderer's frame time, fragments not measured.
+LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
+                           Progress& progress);
+
+}  // namespace voltree

@@ -1,0 +1,193 @@
+#include "lod/lod_bench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/files.h"
+#include "lod/stochastic_pruning.h"
+#include "pipeline/plots.h"
+
+namespace voltree {
+namespace {
+
+std::string Fixed(double value, int digits) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+// JSON has no infinity: identical images' PSNR is written as null.
+nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+std::string LodBenchTable(const LodBenchResult& result) {
+  std::string text = Str(
+      "# LOD bench: ", result.tree, "\n\n", result.leaf_count, " leaves, ", result.triangle_count, " triangles; ",
+      result.views, " views per size (the studio's held-out ring and top views); renderer: ", result.renderer, "\n\n");
+  for (const std::string& note : result.notes) text += "Note: " + note + "\n\n";
+  text +=
+      "| method | size px | lambda | area scale | leaves | triangles | GPU KiB | draw ms | fragments | precision | "
+      "recall | PR score | MS-RMS | RGB PSNR | alpha PSNR |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const LodBenchRow& row : result.rows) {
+    const std::string fragments = row.fragments < 0 ? "not available" : std::to_string(row.fragments);
+    // The asset has cells and billboards, not leaves: no lambda, scale or leaf count.
+    const bool asset = row.method == "asset";
+    text += Str("| ", row.method, " | ", row.size, " | ", asset ? "-" : Fixed(row.lambda, 4), " | ",
+                asset ? "-" : Fixed(row.area_scale, 2), " | ", asset ? "-" : std::to_string(row.leaves), " | ",
+                row.triangles, " | ", Fixed((row.geometry_bytes + row.texture_bytes) / 1024.0, 0), " | ",
+                Fixed(row.draw_ms, 2), " | ", fragments, " | ", Fixed(row.precision, 4), " | ", Fixed(row.recall, 4),
+                " | ", Fixed(row.pr_score, 4), " | ", Fixed(row.multiscale_rms, 4), " | ", Fixed(row.rgb_psnr, 2),
+                " | ", Fixed(row.alpha_psnr, 2), " |\n");
+  }
+  if (!result.scale_searches.empty()) {
+    text += Str("\n## Neubert's PR-optimal scale (preprocessing on the input views, ",
+                Fixed(result.preprocess_seconds, 1), " s)\n\n",
+                "| size px | lambda | Cook s = 1/lambda | PR score at Cook's s | s_opt | PR score at s_opt |\n"
+                "|---:|---:|---:|---:|---:|---:|\n");
+    for (const ScaleSearch& search : result.scale_searches) {
+      // Cook's scale is the candidate lambda^-1 (t = 1); the nearest one is reported.
+      const ScaleTrial* cook = &search.trials.front();
+      for (const ScaleTrial& trial : search.trials)
+        if (std::abs(std::log(trial.area_scale * search.lambda)) < std::abs(std::log(cook->area_scale * search.lambda)))
+          cook = &trial;
+      text += Str("| ", search.size, " | ", Fixed(search.lambda, 4), " | ", Fixed(cook->area_scale, 2), " | ",
+                  Fixed(PrScore(cook->precision, cook->recall), 4), " | ", Fixed(search.best.area_scale, 2), " | ",
+                  Fixed(PrScore(search.best.precision, search.best.recall), 4), " |\n");
+    }
+  }
+  if (result.vmi_seconds > 0)
+    text += Str("\nVMI removal sequence (preprocessing, id renders of the input views): ", Fixed(result.vmi_seconds, 1),
+                " s\n");
+  text +=
+      "\nSizes: the tree framed as in the studio's photos, in an image that many pixels tall. lambda = "
+      "max(min_lambda, (size / frame)^2). GPU KiB: vertex, index and texture buffers. Draw ms: median over the views, "
+      "both passes at the supersampled resolution. PSNR inf: identical to the full mesh.\n";
+  if (std::find(result.methods.begin(), result.methods.end(), "asset") != result.methods.end())
+    text +=
+        "asset: the .vtree drawn by the asset renderer with its own LOD, one sample per pixel; triangles: 2 per cell "
+        "drawn (mean over the views); GPU KiB: its buffers and DXT5 atlas; draw ms: its frame time; fragments not "
+        "measured.\n";
+  return text;
+}
+
+std::string LodBenchJson(const LodBenchResult& result) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const LodBenchRow& row : result.rows) {
+    const bool asset = row.method == "asset";
+    const auto leafy = [asset](const nlohmann::json& value) { return asset ? nlohmann::json(nullptr) : value; };
+    rows.push_back({{"method", row.method},
+                    {"size", row.size},
+                    {"lambda", leafy(row.lambda)},
+                    {"area_scale", leafy(row.area_scale)},
+                    {"leaves", leafy(row.leaves)},
+                    {"triangles", row.triangles},
+                    {"geometry_bytes", row.geometry_bytes},
+                    {"texture_bytes", row.texture_bytes},
+                    {"draw_ms", row.draw_ms},
+                    {"fragments", row.fragments < 0 ? nlohmann::json(nullptr) : nlohmann::json(row.fragments)},
+                    {"precision", row.precision},
+                    {"recall", row.recall},
+                    {"pr_score", row.pr_score},
+                    {"multiscale_rms", row.multiscale_rms},
+                    {"rgb_psnr", Number(row.rgb_psnr)},
+                    {"alpha_psnr", Number(row.alpha_psnr)}});
+  }
+  nlohmann::json searches = nlohmann::json::array();
+  for (const ScaleSearch& search : result.scale_searches) {
+    nlohmann::json trials = nlohmann::json::array();
+    for (const ScaleTrial& trial : search.trials)
+      trials.push_back({{"area_scale", trial.area_scale}, {"precision", trial.precision}, {"recall", trial.recall}});
+    searches.push_back({{"size", search.size},
+                        {"lambda", search.lambda},
+                        {"best_area_scale", search.best.area_scale},
+                        {"trials", trials}});
+  }
+  const nlohmann::json json = {{"tree", result.tree},
+                               {"renderer", result.renderer},
+                               {"leaves", result.leaf_count},
+                               {"triangles", result.triangle_count},
+                               {"leaf_area", result.leaf_area},
+                               {"views_per_size", result.views},
+                               {"fragments_available", result.fragments_available},
+                               {"methods", result.methods},
+                               {"notes", result.notes},
+                               {"rows", rows},
+                               {"scale_searches", searches},
+                               {"preprocess_seconds", result.preprocess_seconds},
+                               {"vmi_seconds", result.vmi_seconds}};
+  return json.dump(2) + "\n";
+}
+
+void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& folder, Progress& progress) {
+  WriteFileAtomic(folder / "table.md", LodBenchTable(result));
+  WriteFileAtomic(folder / "lod_bench.json", LodBenchJson(result));
+
+  std::string why_not;
+  const auto gnuplot = FindGnuplot(folder / "gnuplot_probe.log", &why_not);
+  std::error_code ignored;
+  std::filesystem::remove(folder / "gnuplot_probe.log", ignored);
+  if (!gnuplot) {
+    progress.Say("lod-bench", "no plots: " + why_not);
+    return;
+  }
+  std::map<std::string, PlotSeries> by_cost, by_fragments, by_size;
+  for (const LodBenchRow& row : result.rows) {
+    by_cost[row.method].title = by_fragments[row.method].title = by_size[row.method].title = row.method;
+    by_cost[row.method].points.emplace_back(static_cast<double>(row.triangles), row.pr_score);
+    if (row.fragments > 0) by_fragments[row.method].points.emplace_back(row.fragments / 1000.0, row.pr_score);
+    by_size[row.method].points.emplace_back(row.size, row.multiscale_rms);
+  }
+  const auto make_spec = [](const char* file, const char* title, const char* x_label, const char* y_label) {
+    PlotSpec spec;
+    spec.file = file, spec.title = title, spec.x_label = x_label, spec.y_label = y_label;
+    return spec;
+  };
+  PlotSpec cost = make_spec("quality_vs_cost.png", "PR score against triangles drawn (one point per size)",
+                            "triangles drawn", "PR score Q = 1 - |(1-P, 1-R)|");
+  cost.log_x = true;
+  PlotSpec rms =
+      make_spec("rms_vs_size.png", "Multi-scale RMS against the full mesh", "tree height (px)", "multi-scale RMS");
+  rms.log_x = true;
+  for (auto& [method, series] : by_cost) cost.series.push_back(series);
+  for (auto& [method, series] : by_size) rms.series.push_back(series);
+  // Fragments shaded: what the pixels cost, which llvmpipe's time follows more than triangles.
+  PlotSpec fragments = make_spec("quality_vs_fragments.png", "PR score against fragments shaded (one point per size)",
+                                 "fragments shaded per view (thousands)", "PR score Q = 1 - |(1-P, 1-R)|");
+  fragments.log_x = true;
+  for (auto& [method, series] : by_fragments)
+    if (!series.points.empty()) fragments.series.push_back(series);
+
+  // Neubert et al. 2011 fig. 2: one curve per lambda through the candidate scales, and the points
+  // that Cook's and the PR-optimal scale choose.
+  PlotSpec pr = make_spec("pr_diagram.png", "Precision-recall of pruning and scaling (input views, each size)",
+                          "precision", "recall");
+  PlotSeries cook{"Cook s = 1/lambda", {}}, best{"PR-optimal s", {}};
+  for (const ScaleSearch& search : result.scale_searches) {
+    if (search.trials.size() < 2) continue;  // lambda 1: nothing to choose
+    PlotSeries curve{Str(search.size, " px, lambda ", Fixed(search.lambda, 3)), {}};
+    for (const ScaleTrial& trial : search.trials) curve.points.emplace_back(trial.precision, trial.recall);
+    pr.series.push_back(curve);
+    const ScaleTrial* nearest = &search.trials.front();
+    for (const ScaleTrial& trial : search.trials)
+      if (std::abs(std::log(trial.area_scale * search.lambda)) <
+          std::abs(std::log(nearest->area_scale * search.lambda)))
+        nearest = &trial;
+    cook.points.emplace_back(nearest->precision, nearest->recall);
+    best.points.emplace_back(search.best.precision, search.best.recall);
+  }
+  pr.series.push_back(cook);
+  pr.series.push_back(best);
+  const std::filesystem::path plots = folder / "plots";
+  std::filesystem::create_directories(plots);
+  for (const PlotSpec& spec : {cost, fragments, rms, pr})
+    if (spec.HasPoints()) DrawPlot(*gnuplot, spec, plots);
+}
+
+}  // namespace voltree
