@@ -136,6 +136,28 @@ TEST(TreeRenderer, InputViewReproducesBillboardAlphaAndOrientation) {
   }
 }
 
+// The .vtree layout is a matter of the file: an asset written and read again draws the same pixels.
+TEST(TreeRenderer, ImageUnchangedThroughTheFileLayout) {
+  GlContext context;
+  Scene scene = MakeScene(64);
+  scene.asset.colour_codebook_size = scene.asset.alpha_codebook_size = 2;
+  for (auto& level : scene.asset.levels)
+    for (size_t i = 0; i < level.billboards.size(); ++i)
+      level.billboards[i].colour = uint16_t(i % 2), level.billboards[i].alpha = uint16_t(i / 3 % 2);
+  VtreeWriteOptions zstd;
+  zstd.zstd = true;
+  const VtreeAsset reloaded = ParseAsset(SerializeAsset(scene.asset, zstd), "tree.vtree");
+  TreeRenderer before(scene.asset), after(reloaded);
+  for (double azimuth : {0.0, 0.3, 2.0}) {
+    const View camera = MakeCamera(Eigen::Vector3d(5 * std::cos(azimuth), 5 * std::sin(azimuth), 2.0), 64);
+    const Image8 a = before.Render(camera, {}), b = after.Render(camera, {});
+    int drawn = 0;
+    for (size_t i = 3; i < a.pixels.size(); i += 4) drawn += a.pixels[i] > 0;
+    EXPECT_GT(drawn, 100) << "azimuth " << azimuth;
+    EXPECT_TRUE(a.pixels == b.pixels) << "azimuth " << azimuth;
+  }
+}
+
 TEST(TreeRenderer, TransparentWhereNothingIsAndBackgroundIsComposited) {
   GlContext context;
   const Scene scene = MakeScene(48);
