@@ -27,6 +27,7 @@ void CheckRenderLevel(const std::filesystem::path& asset, int level) {
 }
 
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {
+  for (const std::string& note : result.notes) std::fprintf(stderr, "%s\n", note.c_str());
   const std::string output = job.output.string(), turntable = job.turntable.string();
   const std::string where = output.empty() ? turntable : turntable.empty() ? output : output + " and " + turntable;
   std::printf("%zu frames -> %s (%s)\n", result.frames.size(), where.c_str(), result.renderer.c_str());
@@ -64,6 +65,7 @@ void AddRenderCommand(CLI::App& app) {
       },
       "");
   AddRenderOptions(*command, o.render);
+  AddOption(*command, "--max-level", o.max_level);
   AddOption(*command, "--output", o.output, "Output folder (built aside, renamed into place)");
   AddOption(*command, "--turntable", o.turntable);
   AddFlag(*command, "--force", o.force, "Replace an existing output folder or video");
