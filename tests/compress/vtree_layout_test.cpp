@@ -44,19 +44,18 @@ VtreeAsset RandomAsset(const LayoutCase& c, uint32_t seed) {
       for (const auto& p : parents)
         for (int k = 0; k < b * b * b; ++k)
           if (rng() % 3 != 0)
-            level.cells.push_back({uint16_t(p[0] * b + k % b), uint16_t(p[1] * b + k / b % b),
-                                   uint16_t(p[2] * b + k / (b * b))});
-      std::sort(level.cells.begin(), level.cells.end(), [](const auto& a, const auto& b) {
-        return std::tie(a[2], a[1], a[0]) < std::tie(b[2], b[1], b[0]);
-      });
+            level.cells.push_back(
+                {uint16_t(p[0] * b + k % b), uint16_t(p[1] * b + k / b % b), uint16_t(p[2] * b + k / (b * b))});
+      std::sort(level.cells.begin(), level.cells.end(),
+                [](const auto& a, const auto& b) { return std::tie(a[2], a[1], a[0]) < std::tie(b[2], b[1], b[0]); });
       if (!c.sorted_cells) std::shuffle(level.cells.begin(), level.cells.end(), rng);
     }
     for (size_t i = 0; i < level.cells.size(); ++i) {
       level.density.push_back(std::uniform_real_distribution<float>(0, 9)(rng));
       for (int v = 0; v < c.views; ++v)
         if (rng() % 4 != 0)
-          level.billboards.push_back({uint32_t(i), uint16_t(v), uint16_t(rng() % c.colour_codebook),
-                                      uint16_t(rng() % c.alpha_codebook)});
+          level.billboards.push_back(
+              {uint32_t(i), uint16_t(v), uint16_t(rng() % c.colour_codebook), uint16_t(rng() % c.alpha_codebook)});
     }
     level.billboards_before_pruning = level.billboards.size() + rng() % 7;
     parents = level.cells;
@@ -129,8 +128,8 @@ TEST(VtreeLayout, IndicesTakeTheBitsTheCodebooksNeed) {
   const auto chunks = ListChunks(bytes, "tree.vtree");
   const auto& bbrd = chunks.back();
   ASSERT_EQ(bbrd.tag, "BBRD");
-  const uint64_t expected = 28 + 18 + (finest.cells.size() * c.views + 7) / 8 + 2 * (finest.billboards.size() +
-                                                                                    (finest.billboards.size() + 7) / 8);
+  const uint64_t expected = 28 + 18 + (finest.cells.size() * c.views + 7) / 8 +
+                            2 * (finest.billboards.size() + (finest.billboards.size() + 7) / 8);
   EXPECT_EQ(bbrd.stored_bytes, expected);
 }
 

@@ -64,8 +64,8 @@ TEST(VtreeProgressive, APrefixDrawsItsWholeLevelsAndNamesWhatIsMissing) {
         EXPECT_EQ(report.levels_loaded, k + 1);
         EXPECT_EQ(report.levels_in_file, levels);
         EXPECT_EQ(report.missing.rfind("levels " + std::to_string(k + 1) + ".." + std::to_string(levels - 1) +
-                                           " of 0.." + std::to_string(levels - 1) + " are missing: the file ends at byte " +
-                                           std::to_string(cut),
+                                           " of 0.." + std::to_string(levels - 1) +
+                                           " are missing: the file ends at byte " + std::to_string(cut),
                                        0),
                   0u)
             << report.missing;
@@ -108,8 +108,8 @@ TEST(VtreeProgressive, MaxLevelLoadsTheCoarserLevelsOnly) {
     EXPECT_EQ(asset.levels.size(), std::min<size_t>(max_level + 1, levels));
     EXPECT_EQ(report.levels_in_file, levels);
     // Only what it loads has to be there.
-    const VtreeAsset prefix = ParseAsset(std::string_view(bytes).substr(0, LevelEnds(bytes)[asset.levels.size() - 1]),
-                                         "tree.vtree", read);
+    const VtreeAsset prefix =
+        ParseAsset(std::string_view(bytes).substr(0, LevelEnds(bytes)[asset.levels.size() - 1]), "tree.vtree", read);
     EXPECT_EQ(prefix.levels.size(), asset.levels.size());
   }
   VtreeReadOptions bad;
