@@ -35,6 +35,14 @@ void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& resul
   if (IsSceneFile(job.asset))
     std::printf("instances per frame: %.1f drawn, %.1f culled\n", result.mean_instances_drawn,
                 result.mean_instances_culled);
+  if (job.render.count_fragments) {
+    if (result.mean_fragments >= 0)
+      std::printf("fragments per frame: %.0f (fragment shader invocations, GL_ARB_pipeline_statistics_query)\n",
+                  result.mean_fragments);
+    else
+      std::printf("fragments per frame: not available (%s lacks GL_ARB_pipeline_statistics_query)\n",
+                  result.renderer.c_str());
+  }
   std::printf("GPU memory: %.1f KiB (buffers %.1f KiB, atlases %.1f KiB)\n", result.gpu.Total() / 1024.0,
               result.gpu.buffers / 1024.0, result.gpu.atlas / 1024.0);
 }
@@ -66,6 +74,7 @@ void AddRenderCommand(CLI::App& app) {
       "");
   AddRenderOptions(*command, o.render);
   AddOption(*command, "--max-level", o.max_level);
+  AddFlag(*command, "--stats", o.render.count_fragments);
   AddOption(*command, "--output", o.output, "Output folder (built aside, renamed into place)");
   AddOption(*command, "--turntable", o.turntable);
   AddFlag(*command, "--force", o.force, "Replace an existing output folder or video");

@@ -265,11 +265,16 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    const bool count = options.count_fragments && (fragment_counter_ || FragmentCounter::Available());
+    if (count && !fragment_counter_) fragment_counter_ = std::make_unique<FragmentCounter>();
+    if (count) fragment_counter_->Begin();
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(records.size()));  // one draw per tree
+    if (count) stats.fragments = int64_t(fragment_counter_->End());
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glBindVertexArray(0);
-  }
+  } else if (options.count_fragments && (fragment_counter_ || FragmentCounter::Available()))
+    stats.fragments = 0;  // nothing to draw
   if (draw.finish) glFinish();
   CheckGl("render: drawing the tree");
   stats.frame_ms = Ms(start, Clock::now());

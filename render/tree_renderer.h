@@ -35,6 +35,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/vtree.h"
+#include "render/fragment_counter.h"
 #include "render/framebuffer.h"
 #include "render/gl_objects.h"
 #include "render/instance_transform.h"
@@ -55,6 +56,7 @@ struct TreeRenderOptions {
                                    // on the sequence rendered before them, deterministically)
   bool tint_levels = false;        // colour each billboard by its octree level (LOD figures)
   bool nearest_view_only = false;  // draw only the nearest input view's billboards (to see what the blend adds)
+  bool count_fragments = false;    // FrameStats::fragments, where the driver can count them (FragmentCounter)
   void Check() const;
 };
 
@@ -80,6 +82,7 @@ struct FrameStats {
   int min_level = -1, max_level = -1;
   std::vector<size_t> cells_per_level;  // cells drawn at each octree level (index = level)
   ViewPair views;
+  int64_t fragments = -1;   // fragment shader invocations (options.count_fragments); -1: not counted
   double traversal_ms = 0;  // CPU traversal and record building
   double frame_ms = 0;      // traversal + upload + draw + glFinish (no read-back)
 };
@@ -124,6 +127,7 @@ class TreeRenderer {
   GlVertexArray vertex_array_;
   std::vector<uint8_t> lod_state_;  // per cell: refined in the previous frame
   std::unique_ptr<Framebuffer> target_;
+  std::unique_ptr<FragmentCounter> fragment_counter_;  // made on the first counted frame, when available
 };
 
 }  // namespace voltree

@@ -215,6 +215,11 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   result.median_ms = Median(ms);
   const double n = double(std::max<size_t>(ms.size(), 1));
   result.mean_billboards = billboards / n;
+  double fragments = 0;
+  size_t counted = 0;
+  for (const FrameStats& s : result.stats)
+    if (s.fragments >= 0) fragments += double(s.fragments), ++counted;
+  if (counted > 0) result.mean_fragments = fragments / double(counted);
   result.mean_instances_drawn = drawn / n;
   result.mean_instances_culled = culled / n;
   result.gpu = source->GpuBytes();

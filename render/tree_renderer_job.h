@@ -36,7 +36,8 @@ struct RenderJobResult {
   GpuMemory gpu;         // buffers and atlases of all assets
   double median_ms = 0;  // of FrameStats::frame_ms
   double mean_billboards = 0;
-  std::string renderer;  // GL_RENDERER
+  double mean_fragments = -1;  // fragment shader invocations per frame (render.count_fragments); -1: not available
+  std::string renderer;        // GL_RENDERER
   // What the frames lack and why: a truncated asset's missing levels, a --max-level cap or clamp.
   std::vector<std::string> notes;
 };

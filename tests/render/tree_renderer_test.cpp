@@ -158,6 +158,30 @@ TEST(TreeRenderer, ImageUnchangedThroughTheFileLayout) {
   }
 }
 
+// render --stats: fragment shader invocations per frame, or -1 where the driver cannot count them.
+TEST(TreeRenderer, CountsFragmentsWhereTheDriverCan) {
+  GlContext context;
+  const Scene scene = MakeScene(64);
+  TreeRenderer renderer(scene.asset);
+  TreeRenderOptions options;
+  FrameStats stats;
+  renderer.Render(scene.cameras[0], options, &stats);
+  EXPECT_EQ(stats.fragments, -1);  // not asked
+  options.count_fragments = true;
+  const Image8 image = renderer.Render(scene.cameras[0], options, &stats);
+  if (!FragmentCounter::Available()) {
+    EXPECT_EQ(stats.fragments, -1);
+    GTEST_SKIP() << context.renderer() << " lacks GL_ARB_pipeline_statistics_query";
+  }
+  int drawn = 0;
+  for (size_t i = 3; i < image.pixels.size(); i += 4) drawn += image.pixels[i] > 0;
+  // Every drawn pixel ran the fragment shader at least once; quads overlap and cover more than the
+  // billboards, so there are more invocations than drawn pixels, but not more than quads x pixels.
+  EXPECT_GT(drawn, 100);
+  EXPECT_GE(stats.fragments, drawn);
+  EXPECT_LE(stats.fragments, int64_t(stats.cells) * 64 * 64);
+}
+
 TEST(TreeRenderer, TransparentWhereNothingIsAndBackgroundIsComposited) {
   GlContext context;
   const Scene scene = MakeScene(48);
