@@ -39,8 +39,14 @@ AssetBytes CountAssetBytes(const VtreeAsset& asset, uint64_t file_bytes) {
   bytes.vq_indices = (billboards * index_bits + 7) / 8;
   bytes.gpu_atlas = asset.atlas.dxt5.size();
   // Cell and view of a billboard are looked up on the CPU (OctreeIndex), so the GPU holds only the
-  // tiles per billboard and a vec4 per cell (render/tree_renderer.cpp).
-  bytes.gpu_billboards = billboards * sizeof(uint32_t);
+  // billboard's two tiles, packed as narrow as the largest tiles used allow, and a vec4 per cell
+  // (render/tree_renderer.cpp).
+  uint32_t max_colour = 0, max_alpha = 0;
+  for (const auto& level : asset.levels)
+    for (const auto& b : level.billboards)
+      max_colour = std::max<uint32_t>(max_colour, b.colour), max_alpha = std::max<uint32_t>(max_alpha, b.alpha);
+  const uint64_t pair_bits = std::bit_width(max_colour) + std::bit_width(max_alpha);
+  bytes.gpu_billboards = ((billboards * pair_bits + 31) / 32 + 1) * sizeof(uint32_t);
   bytes.gpu_cells = asset.CellCount() * 4 * sizeof(float);
   bytes.on_disk = file_bytes;
   return bytes;

@@ -14,7 +14,7 @@ struct AssetBytes {
   uint64_t vq_indices = 0;             // (colour, alpha) index pair per billboard, as narrow as the
                                        // codebooks allow (the .vtree BBRD index streams)
   uint64_t gpu_atlas = 0;              // DXT5 atlas
-  uint64_t gpu_billboards = 0;         // per-billboard records as TreeRenderer uploads them (colour | alpha << 16)
+  uint64_t gpu_billboards = 0;         // per-billboard tile pairs as TreeRenderer uploads them (bit-packed)
   uint64_t gpu_cells = 0;              // per-cell records as TreeRenderer uploads them (centre, side: vec4)
   uint64_t on_disk = 0;                // the .vtree file (0 when unknown)
 

@@ -1,12 +1,11 @@
 // Draws a .vtree asset with OpenGL (Reche 2004 / Linz 2006 billboard clouds).
 //
 // Built once per asset: the cells of every level (centre, side) and the billboard records
-// (colour tile, alpha tile) as shader storage buffers, the DXT5 atlas as one
-// GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear filtering, no mipmaps: tiles are packed edge
-// to edge). Each frame: the two input views nearest in angle are chosen (SelectViews), a CPU
-// back-to-front traversal picks the cells (TraverseBackToFront, LOD), and one record per cell
-// (cell, billboard of view A, billboard of view B) goes into one buffer drawn by ONE instanced
-// draw call of camera-facing quads.
+// (colour tile, alpha tile, bit-packed as narrow as the tiles used allow) as shader storage buffers, the DXT5 atlas as
+// one GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear filtering, no mipmaps: tiles are packed edge to edge). Each
+// frame: the two input views nearest in angle are chosen (SelectViews), a CPU back-to-front traversal picks the cells
+// (TraverseBackToFront, LOD), and one record per cell (cell, billboard of view A, billboard of view B) goes into one
+// buffer drawn by ONE instanced draw call of camera-facing quads.
 //
 // Geometry: a cell's billboard for input view v is the square of side `billboard_scale` x cell
 // edge through the cell centre parallel to v's image plane, exactly what reconstruct textured.
@@ -121,7 +120,7 @@ class TreeRenderer {
   size_t atlas_bytes_ = 0;
   ShaderProgram program_;
   GlBuffer cells_;          // centre, side per cell (vec4)
-  GlBuffer billboards_;     // colour | alpha << 16 per billboard
+  GlBuffer billboards_;     // (colour, alpha) tile pairs, bit-packed
   GlStreamBuffer records_;  // the frame's (cell, billboard A, billboard B, 0)
   GlTexture atlas_;         // DXT5
   GlVertexArray vertex_array_;

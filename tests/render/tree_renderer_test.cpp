@@ -158,6 +158,45 @@ TEST(TreeRenderer, ImageUnchangedThroughTheFileLayout) {
   }
 }
 
+// The GPU holds each billboard's tile pair bit-packed (9 + 9 bits for 512 tiles, pairs straddling
+// 32-bit words): an atlas of 512 copies of the two tiles, with the billboards naming high tile
+// numbers of the same contents, draws what the two-tile asset draws.
+TEST(TreeRenderer, PackedTilePairsNameTheTilesTheyMean) {
+  GlContext context;
+  const Scene scene = MakeScene(64);
+  VtreeAsset wide = scene.asset;
+  wide.atlas.tiles_per_row = 32;
+  wide.atlas.tile_count = 512;
+  wide.atlas.width = 32 * 4;
+  wide.atlas.height = 16 * 4;
+  // Tile t: the opaque tile (0) below 256, the half-opaque one (1) from 256 on (the top bit of 9
+  // decides, so a pair read from the wrong bits shows); DXT5 rows of blocks.
+  wide.atlas.dxt5.clear();
+  for (uint32_t row = 0; row < 16; ++row)
+    for (uint32_t column = 0; column < 32; ++column) {
+      const auto block = Dxt5Block(row * 32 + column < 256 ? 4 : 2);
+      wide.atlas.dxt5.insert(wide.atlas.dxt5.end(), block.begin(), block.end());
+    }
+  uint32_t n = 0;
+  for (auto& level : wide.levels)
+    for (auto& b : level.billboards) {
+      ++n;
+      b.colour = uint16_t((n * 37) % 512);        // white in every tile
+      b.alpha = uint16_t(256 + (n * 101) % 256);  // the top half, as tile 1
+    }
+  TreeRenderer narrow(scene.asset), packed(wide);
+  for (int v : {0, 3}) {
+    const Image8 a = narrow.Render(scene.cameras[v], {}), b = packed.Render(scene.cameras[v], {});
+    int drawn = 0, differ = 0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) {
+      drawn += i % 4 == 3 && a.pixels[i] > 0;
+      differ += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 2;
+    }
+    EXPECT_GT(drawn, 100) << "view " << v;
+    EXPECT_EQ(differ, 0) << "view " << v;
+  }
+}
+
 // render --stats: fragment shader invocations per frame, or -1 where the driver cannot count them.
 TEST(TreeRenderer, CountsFragmentsWhereTheDriverCan) {
   GlContext context;
