@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <optional>
-#include <tuple>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <tuple>
 
 #include "core/bit_stream.h"
 #include "core/byte_reader.h"
@@ -27,8 +27,8 @@ constexpr size_t kChunkHeaderBytes = 4 + 4 + 8 + 8 + 4;
 constexpr uint32_t kRaw = 0, kZstd = 1;
 constexpr size_t kCellBytes = 3 * 2 + 4;  // explicit coordinates + density
 constexpr uint8_t kExplicitCells = 0, kChildMasks = 1;
-// Billboards of one level a reader accepts: 10 bytes each in memory, decoded from as little as 18
-// bits, so the chunk size limit alone would not bound the allocation.
+// Billboards of one level a reader accepts: 12 bytes each in memory, decoded from as little as one
+// mask bit, so the chunk size limit alone would not bound the allocation.
 constexpr uint32_t kMaxBillboardsPerLevel = uint32_t(1) << 25;
 constexpr uint32_t kMaxLevels = 17;        // 2^16 cells per axis fit u16 coordinates
 constexpr uint32_t kMaxAtlasSide = 16384;  // GL_MAX_TEXTURE_SIZE on every current driver
