@@ -1,5 +1,6 @@
 // voltree render ASSET: frames of a .vtree asset or a scene .json on an orbit or from COLMAP
 // cameras, as PNGs and/or a turntable video.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -18,12 +19,22 @@ namespace voltree::app {
 namespace {
 
 // --level names an octree level of the asset; beyond its finest the renderer would clamp silently.
-void CheckRenderLevel(const std::filesystem::path& asset, int level) {
+// A truncated file or --max-level leaves fewer levels: the check is against those the job loads.
+void CheckRenderLevel(const std::filesystem::path& asset, int level, int max_level) {
   if (level < 0) Fail("--level ", level, ": expected an octree level, 0 or more");
   if (IsSceneFile(asset)) return;  // each of a scene's assets has its own levels; they clamp
-  const size_t levels = ReadAsset(asset).levels.size();
+  VtreeLoadReport report;
+  VtreeReadOptions read;
+  read.allow_partial = true;
+  read.max_level = std::max(max_level, -1);  // a bad --max-level is the job's to report
+  read.report = &report;
+  const size_t levels = ReadAsset(asset, read).levels.size();
+  const std::string why = levels < report.levels_in_file
+                              ? Str(" of its 0..", report.levels_in_file - 1,
+                                    report.truncated ? " (the file is truncated)" : " (--max-level)")
+                              : "";
   if (size_t(level) >= levels)
-    Fail("--level ", level, ": ", asset.string(), " has levels 0..", levels - 1, "; expected one of them");
+    Fail("--level ", level, ": ", asset.string(), " has levels 0..", levels - 1, why, "; expected one of them");
 }
 
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {
@@ -84,7 +95,8 @@ void AddRenderCommand(CLI::App& app) {
     // Given options are checked as given: 0 or negative frames are a mistake, not "the default".
     if (orbit->count() > 0 && job.orbit < 1)
       Fail("--orbit ", job.orbit, ": expected the number of frames, 1 or more (default 36)");
-    if (command->get_option("--level")->count() > 0) CheckRenderLevel(job.asset, job.render.lod.forced_level);
+    if (command->get_option("--level")->count() > 0)
+      CheckRenderLevel(job.asset, job.render.lod.forced_level, job.max_level);
     if (orbit->count() == 0 && job.cameras.empty()) job.orbit = 36;
     Progress progress(args->quiet);
     PrintRenderResult(job, RunRenderJob(job, &progress));

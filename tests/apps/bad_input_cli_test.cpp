@@ -155,6 +155,11 @@ const std::vector<BadInputCase>& Cases() {
        [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
        1,
        {"--level 99", "ws/tree.vtree", "levels 0..2"}},
+      {"--level beyond the levels --max-level loads",
+       "render ws/tree.vtree --max-level 1 --level 2 -o frames",
+       [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
+       1,
+       {"--level 2", "ws/tree.vtree", "levels 0..1 of its 0..2", "--max-level"}},
       {"an asset of an older format version",
        "info old.vtree",
        [](const fs::path& d) {
