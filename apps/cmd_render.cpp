@@ -1,5 +1,6 @@
 // voltree render ASSET: frames of a .vtree asset or a scene .json on an orbit or from COLMAP
 // cameras, as PNGs and/or a turntable video.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -18,15 +19,26 @@ namespace voltree::app {
 namespace {
 
 // --level names an octree level of the asset; beyond its finest the renderer would clamp silently.
-void CheckRenderLevel(const std::filesystem::path& asset, int level) {
+// A truncated file or --max-level leaves fewer levels: the check is against those the job loads.
+void CheckRenderLevel(const std::filesystem::path& asset, int level, int max_level) {
   if (level < 0) Fail("--level ", level, ": expected an octree level, 0 or more");
   if (IsSceneFile(asset)) return;  // each of a scene's assets has its own levels; they clamp
-  const size_t levels = ReadAsset(asset).levels.size();
+  VtreeLoadReport report;
+  VtreeReadOptions read;
+  read.allow_partial = true;
+  read.max_level = std::max(max_level, -1);  // a bad --max-level is the job's to report
+  read.report = &report;
+  const size_t levels = ReadAsset(asset, read).levels.size();
+  const std::string why = levels < report.levels_in_file
+                              ? Str(" of its 0..", report.levels_in_file - 1,
+                                    report.truncated ? " (the file is truncated)" : " (--max-level)")
+                              : "";
   if (size_t(level) >= levels)
-    Fail("--level ", level, ": ", asset.string(), " has levels 0..", levels - 1, "; expected one of them");
+    Fail("--level ", level, ": ", asset.string(), " has levels 0..", levels - 1, why, "; expected one of them");
 }
 
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {
+  for (const std::string& note : result.notes) std::fprintf(stderr, "%s\n", note.c_str());
   const std::string output = job.output.string(), turntable = job.turntable.string();
   const std::string where = output.empty() ? turntable : turntable.empty() ? output : output + " and " + turntable;
   std::printf("%zu frames -> %s (%s)\n", result.frames.size(), where.c_str(), result.renderer.c_str());
@@ -34,6 +46,14 @@ void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& resul
   if (IsSceneFile(job.asset))
     std::printf("instances per frame: %.1f drawn, %.1f culled\n", result.mean_instances_drawn,
                 result.mean_instances_culled);
+  if (job.render.count_fragments) {
+    if (result.mean_fragments >= 0)
+      std::printf("fragments per frame: %.0f (fragment shader invocations, GL_ARB_pipeline_statistics_query)\n",
+                  result.mean_fragments);
+    else
+      std::printf("fragments per frame: not available (%s lacks GL_ARB_pipeline_statistics_query)\n",
+                  result.renderer.c_str());
+  }
   std::printf("GPU memory: %.1f KiB (buffers %.1f KiB, atlases %.1f KiB)\n", result.gpu.Total() / 1024.0,
               result.gpu.buffers / 1024.0, result.gpu.atlas / 1024.0);
 }
@@ -64,6 +84,8 @@ void AddRenderCommand(CLI::App& app) {
       },
       "");
   AddRenderOptions(*command, o.render);
+  AddOption(*command, "--max-level", o.max_level);
+  AddFlag(*command, "--stats", o.render.count_fragments);
   AddOption(*command, "--output", o.output, "Output folder (built aside, renamed into place)");
   AddOption(*command, "--turntable", o.turntable);
   AddFlag(*command, "--force", o.force, "Replace an existing output folder or video");
@@ -73,7 +95,8 @@ void AddRenderCommand(CLI::App& app) {
     // Given options are checked as given: 0 or negative frames are a mistake, not "the default".
     if (orbit->count() > 0 && job.orbit < 1)
       Fail("--orbit ", job.orbit, ": expected the number of frames, 1 or more (default 36)");
-    if (command->get_option("--level")->count() > 0) CheckRenderLevel(job.asset, job.render.lod.forced_level);
+    if (command->get_option("--level")->count() > 0)
+      CheckRenderLevel(job.asset, job.render.lod.forced_level, job.max_level);
     if (orbit->count() == 0 && job.cameras.empty()) job.orbit = 36;
     Progress progress(args->quiet);
     PrintRenderResult(job, RunRenderJob(job, &progress));

@@ -205,6 +205,14 @@ std::vector<OptionSpec> RenderFlags() {
        {"RenderJobOptions.asset_folder", "ViewerOptions.asset_folder", "WebPageOptions.asset_folder"},
        "Scenes: folder to look their assets up in (default: the scene's folder)"},
       {"--level", {"LodOptions.forced_level"}, "Draw only this octree level (default: LOD)"},
+      {"--stats",
+       {"TreeRenderOptions.count_fragments"},
+       "Also count the fragments each frame costs (fragment shader invocations, GL_ARB_pipeline_statistics_query; "
+       "says so where the driver cannot count them)"},
+      {"--max-level",
+       {"RenderJobOptions.max_level"},
+       "Load the asset's levels 0..K only (progressive: what the first bytes of the file draw); beyond the asset's "
+       "finest level: all, with a note (default: all)"},
       {"--lod",
        {"LodOptions.rule"},
        "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view direction)"},

@@ -1,5 +1,7 @@
 #include "compress/asset_accounting.h"
 
+#include <algorithm>
+#include <bit>
 #include <cstdio>
 
 #include "core/error.h"
@@ -32,10 +34,20 @@ AssetBytes CountAssetBytes(const VtreeAsset& asset, uint64_t file_bytes) {
   const uint64_t billboards = asset.BillboardCount();
   bytes.uncompressed_textures = billboards * texels * 4;
   bytes.vq_codebooks = uint64_t(asset.colour_codebook_size) * texels * 3 + uint64_t(asset.alpha_codebook_size) * texels;
-  bytes.vq_indices = billboards * 2 * sizeof(uint16_t);
+  const uint64_t index_bits = std::bit_width(std::max(asset.colour_codebook_size, 1u) - 1) +
+                              std::bit_width(std::max(asset.alpha_codebook_size, 1u) - 1);
+  bytes.vq_indices = (billboards * index_bits + 7) / 8;
   bytes.gpu_atlas = asset.atlas.dxt5.size();
-  bytes.gpu_billboards = billboards * (sizeof(uint32_t) + 3 * sizeof(uint16_t));
-  bytes.gpu_cells = asset.CellCount() * (3 * sizeof(uint16_t) + sizeof(float));
+  // Cell and view of a billboard are looked up on the CPU (OctreeIndex), so the GPU holds only the
+  // billboard's two tiles, packed as narrow as the largest tiles used allow, and a vec4 per cell
+  // (render/tree_renderer.cpp).
+  uint32_t max_colour = 0, max_alpha = 0;
+  for (const auto& level : asset.levels)
+    for (const auto& b : level.billboards)
+      max_colour = std::max<uint32_t>(max_colour, b.colour), max_alpha = std::max<uint32_t>(max_alpha, b.alpha);
+  const uint64_t pair_bits = std::bit_width(max_colour) + std::bit_width(max_alpha);
+  bytes.gpu_billboards = ((billboards * pair_bits + 31) / 32 + 1) * sizeof(uint32_t);
+  bytes.gpu_cells = asset.CellCount() * 4 * sizeof(float);
   bytes.on_disk = file_bytes;
   return bytes;
 }

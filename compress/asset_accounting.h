@@ -11,10 +11,11 @@ namespace voltree {
 struct AssetBytes {
   uint64_t uncompressed_textures = 0;  // every billboard as n x n RGBA8
   uint64_t vq_codebooks = 0;           // colour codewords as RGB8 + alpha codewords as A8
-  uint64_t vq_indices = 0;             // (colour, alpha) index pair per billboard, u16 each
+  uint64_t vq_indices = 0;             // (colour, alpha) index pair per billboard, as narrow as the
+                                       // codebooks allow (the .vtree BBRD index streams)
   uint64_t gpu_atlas = 0;              // DXT5 atlas
-  uint64_t gpu_billboards = 0;         // per-billboard records (cell, view, colour, alpha)
-  uint64_t gpu_cells = 0;              // cell coordinates + density
+  uint64_t gpu_billboards = 0;         // per-billboard tile pairs as TreeRenderer uploads them (bit-packed)
+  uint64_t gpu_cells = 0;              // per-cell records as TreeRenderer uploads them (centre, side: vec4)
   uint64_t on_disk = 0;                // the .vtree file (0 when unknown)
 
   uint64_t Vq() const { return vq_codebooks + vq_indices; }

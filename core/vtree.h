@@ -1,16 +1,28 @@
 // The .vtree asset: a compressed volumetric tree, ready for the renderer.
 //
-// Layout (little-endian):
+// Layout (little-endian), format version 2:
 //   "VTREE\0\0\0"  u32 format version (kVtreeFormatVersion)
-//   chunks, in this order: HEAD, then CELL and BBRD for every level (root first), then ATLS.
+//   chunks, in this order: HEAD, ATLS, then CELL and BBRD for every level (root first). Progressive:
+//   a prefix of the file that ends after level K's BBRD holds everything levels 0..K draw with.
 //   Each chunk: char tag[4], u32 encoding (0 raw, 1 zstd), u64 stored size, u64 raw size,
 //   u32 CRC-32 of (tag, encoding, sizes, stored payload), then the stored payload.
 //   HEAD  JSON (UTF-8): levels, branching, texels, root cube, views, codebooks, bounds, provenance.
-//   CELL  u32 level, u32 resolution, u32 n, n x u16[3] cell coordinates, n x f32 density.
-//   BBRD  u32 level, u64 billboards before pruning, u32 m,
-//         m x {u32 cell, u16 view, u16 colour codeword, u16 alpha codeword}.
 //   ATLS  u32 width, u32 height, u32 tile pitch, u32 tiles per row, u32 tile count,
 //         width * height bytes of DXT5 blocks (row-major blocks).
+//   CELL  u32 level, u32 resolution, u32 n, u8 cell coding, then
+//           coding 0 (explicit): n x u16[3] cell coordinates;
+//           coding 1 (child masks, only below level 0): for each cell of the level above, in its
+//             order, ceil(b^3 / 8) bytes of a mask whose bit x + b * (y + b * z) marks the child at
+//             offset (x, y, z); the level's cells are those children sorted by (z, y, x);
+//         then n x f32 density as 4 byte planes (every cell's byte 0, then every byte 1, ...).
+//   BBRD  u32 level, u64 billboards before pruning, u32 m, u8 colour index bits, u8 alpha index bits
+//         (bit_width(codebook size - 1) each), then bit streams, each padded to a whole byte:
+//           view masks: n x V bits, cell-major; bit (c * V + v) says cell c has view v's billboard;
+//           m colour indices, then m alpha indices, in (cell, view) order. An index stream of k
+//             bits: k <= 8, k-bit fields; k > 8, m low bytes, then m fields of the high k - 8 bits.
+//   Bit streams are least significant bit first (core/bit_stream.h). Cell and view of a billboard
+//   are implicit in the view masks, which is why billboards are sorted by (cell, view).
+//   Version 1 (10-byte billboard records, atlas last) is refused with a message to rebuild.
 //
 // The atlas holds tile i at ((i % tiles_per_row) * pitch, (i / tiles_per_row) * pitch): RGB is
 // colour codeword i, A is alpha codeword i, both n x n texels in the top-left of the tile. A
@@ -30,7 +42,7 @@
 
 namespace voltree {
 
-constexpr uint32_t kVtreeFormatVersion = 1;
+constexpr uint32_t kVtreeFormatVersion = 2;
 
 struct VtreeBillboard {
   uint32_t cell = 0;    // index into VtreeLevel::cells
@@ -87,13 +99,29 @@ struct VtreeAsset {
 };
 
 struct VtreeWriteOptions {
-  bool zstd = false;  // compress chunk payloads (not HEAD) with zstd
+  bool zstd = false;  // compress chunk payloads (not HEAD) with zstd, each only where that makes it smaller
   int zstd_level = 19;
   bool force = false;  // overwrite an existing file
 };
 
+// What a read left out: levels beyond VtreeReadOptions::max_level, or beyond the end of a
+// truncated (progressively downloaded) file when VtreeReadOptions::allow_partial.
+struct VtreeLoadReport {
+  uint32_t levels_in_file = 0;  // as HEAD declares
+  uint32_t levels_loaded = 0;
+  bool truncated = false;  // the bytes end before the last level wanted
+  uint64_t file_bytes = 0;
+  std::string missing;  // when truncated: which levels and where the file ends
+};
+
 struct VtreeReadOptions {
   bool verify_checksums = true;  // the fuzzer turns this off to reach the parsers behind the CRC
+  // A file cut off after some whole level (HEAD, ATLS and level 0 at least) loads the whole levels
+  // and says what is missing in `report`, instead of failing.
+  bool allow_partial = false;
+  int max_level = -1;                 // finest level to load (coarser levels only); -1: all
+  VtreeLoadReport* report = nullptr;  // filled when given
+  void Check() const;
 };
 
 // Largest decompressed chunk a reader accepts, so that a corrupt size cannot allocate absurdly.
@@ -112,7 +140,8 @@ struct VtreeChunkInfo {
   std::string tag;
   uint64_t offset = 0, stored_bytes = 0, raw_bytes = 0;
   bool zstd = false;
+  bool complete = true;  // false: cut off by the end of the file (only with allow_partial; then last)
 };
-std::vector<VtreeChunkInfo> ListChunks(std::string_view bytes, const std::string& name);
+std::vector<VtreeChunkInfo> ListChunks(std::string_view bytes, const std::string& name, bool allow_partial = false);
 
 }  // namespace voltree

@@ -27,12 +27,24 @@ int main(int argc, char** argv) {
   asset.colour_codebook_size = 2;
   asset.alpha_codebook_size = 2;
   asset.atlas = {8, 4, 4, 2, 2, std::vector<uint8_t>(32, 0x5A)};
+  // A third level whose cells are out of (z, y, x) order: stored explicitly, not as child masks.
+  VtreeLevel explicit_cells;
+  explicit_cells.resolution = 4;
+  explicit_cells.cells = {{1, 1, 0}, {0, 0, 0}};
+  explicit_cells.density = {0.5f, 2.0f};
+  explicit_cells.billboards = {{0, 1, 1, 1}, {1, 0, 0, 0}, {1, 1, 1, 0}};
+  explicit_cells.billboards_before_pruning = 4;
+  VtreeAsset three_levels = asset;
+  three_levels.levels.push_back(explicit_cells);
   std::filesystem::create_directories(argv[1]);
-  for (int variant = 0; variant < 4; ++variant) {
-    VtreeWriteOptions options;
-    options.zstd = variant & 2;
-    const std::string bytes = std::string(1, char(variant & 1)) + SerializeAsset(asset, options);
-    WriteFileAtomic(std::filesystem::path(argv[1]) / ("seed_" + std::to_string(variant) + ".vtree"), bytes);
-  }
+  int seed = 0;
+  for (const VtreeAsset* tree : {&asset, &three_levels})
+    for (int variant = 0; variant < 16; ++variant) {
+      VtreeWriteOptions options;
+      options.zstd = variant & 8;
+      std::string bytes = std::string(1, char(variant & 7)) + SerializeAsset(*tree, options);
+      if (variant & 2) bytes.resize(bytes.size() - 7);  // partial reads: the last level cut off
+      WriteFileAtomic(std::filesystem::path(argv[1]) / ("seed_" + std::to_string(seed++) + ".vtree"), bytes);
+    }
   return 0;
 }

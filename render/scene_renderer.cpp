@@ -41,6 +41,7 @@ void Accumulate(const FrameStats& tree, FrameStats* total) {
   total->cells += tree.cells;
   total->billboards += tree.billboards;
   total->traversal_ms += tree.traversal_ms;
+  if (tree.fragments >= 0) total->fragments = std::max<int64_t>(total->fragments, 0) + tree.fragments;
   if (tree.min_level >= 0)
     total->min_level = total->min_level < 0 ? tree.min_level : std::min(total->min_level, tree.min_level);
   total->max_level = std::max(total->max_level, tree.max_level);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 
@@ -16,7 +17,7 @@ namespace {
 // The vertex shader is kVertexHeader + kProjectionGlsl + kVertexMain.
 constexpr const char* kVertexHeader = R"(#version 430 core
 layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side (asset frame)
-layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // colour | alpha << 16
+layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // packed tile pairs
 layout(std430, binding = 2) readonly buffer Frame { uvec4 frame[]; };           // cell, A, B, 0
 )";
 
@@ -32,6 +33,18 @@ out vec3 vWorld;
 flat out vec4 vCell;    // world centre, world side
 flat out uvec3 vTiles;  // tiles of A, tiles of B, presence mask
 flat out int vLevel;
+uniform uint uColourBits, uAlphaBits;  // bits of a billboard's colour and alpha tile in the packed buffer
+
+// Billboard b's tiles as colour | alpha << 16: its colour and alpha fields, least significant bit
+// first, start at bit b * (uColourBits + uAlphaBits) of the buffer and may span two words.
+uint Tiles(uint b) {
+  uint bits = uColourBits + uAlphaBits, at = b * bits, word = at >> 5u, shift = at & 31u;
+  uint value = billboards[word] >> shift;
+  if (shift + bits > 32u) value |= billboards[word + 1u] << (32u - shift);
+  value &= bits < 32u ? (1u << bits) - 1u : 0xffffffffu;
+  uint colour = value & ((1u << uColourBits) - 1u), alpha = value >> uColourBits;  // each at most 16 bits
+  return colour | (alpha << 16u);
+}
 
 void main() {
   uvec4 record = frame[gl_InstanceID];
@@ -50,7 +63,7 @@ void main() {
   vCell = vec4(centre, side);
   vLevel = int(round(log2(uRootSize / cell.w)));
   uint mask = (record.y != 0xffffffffu ? 1u : 0u) | (record.z != 0xffffffffu ? 2u : 0u);
-  vTiles = uvec3((mask & 1u) != 0u ? billboards[record.y] : 0u, (mask & 2u) != 0u ? billboards[record.z] : 0u, mask);
+  vTiles = uvec3((mask & 1u) != 0u ? Tiles(record.y) : 0u, (mask & 2u) != 0u ? Tiles(record.z) : 0u, mask);
   gl_Position = ProjectToClip(vWorld);
 }
 )";
@@ -145,12 +158,24 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
     cells[4 * c] = float(p.x()), cells[4 * c + 1] = float(p.y()), cells[4 * c + 2] = float(p.z());
     cells[4 * c + 3] = float(index_.CellSize(index_.LevelOf(c)));
   }
-  std::vector<uint32_t> billboards(index_.BillboardCount());
+  // Tile pairs packed as narrow as the tiles used allow (as the .vtree stores them): 9 + 9 bits for
+  // codebooks of 512, not 32.
+  uint32_t max_colour = 0, max_alpha = 0;
   for (uint32_t b = 0; b < index_.BillboardCount(); ++b) {
     const VtreeBillboard& record = index_.Billboard(b);
     if (record.colour >= asset.atlas.tile_count || record.alpha >= asset.atlas.tile_count)
       Fail("render: billboard ", b, " names a tile beyond the atlas's ", asset.atlas.tile_count);
-    billboards[b] = uint32_t(record.colour) | (uint32_t(record.alpha) << 16);
+    max_colour = std::max<uint32_t>(max_colour, record.colour), max_alpha = std::max<uint32_t>(max_alpha, record.alpha);
+  }
+  const int colour_bits = std::bit_width(max_colour), alpha_bits = std::bit_width(max_alpha);
+  const uint64_t pair_bits = uint64_t(colour_bits + alpha_bits);
+  std::vector<uint32_t> billboards((index_.BillboardCount() * pair_bits + 31) / 32 + 1, 0);
+  for (uint32_t b = 0; b < index_.BillboardCount(); ++b) {
+    const VtreeBillboard& record = index_.Billboard(b);
+    const uint64_t pair = uint64_t(record.colour) | (uint64_t(record.alpha) << colour_bits);
+    const uint64_t at = b * pair_bits;
+    billboards[at / 32] |= uint32_t(pair << (at % 32));
+    if (at % 32 + pair_bits > 32) billboards[at / 32 + 1] |= uint32_t(pair >> (32 - at % 32));
   }
   // At least 16 bytes each: a shader storage block is never bound empty.
   cells_ = GlBuffer(cells.data(), cells.size() * sizeof(float), 16);
@@ -170,6 +195,8 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   program_.Set("uTilesPerRow", int(atlas.tiles_per_row));
   program_.Set("uAtlasSize", Eigen::Vector2f(float(atlas.width), float(atlas.height)));
   program_.Set("uRootSize", float(asset.size));
+  glProgramUniform1ui(program_.id(), program_.Location("uColourBits"), GLuint(colour_bits));
+  glProgramUniform1ui(program_.id(), program_.Location("uAlphaBits"), GLuint(alpha_bits));
 }
 
 double TreeRenderer::BoundingRadius(double billboard_scale) const {
@@ -265,11 +292,16 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    const bool count = options.count_fragments && (fragment_counter_ || FragmentCounter::Available());
+    if (count && !fragment_counter_) fragment_counter_ = std::make_unique<FragmentCounter>();
+    if (count) fragment_counter_->Begin();
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(records.size()));  // one draw per tree
+    if (count) stats.fragments = int64_t(fragment_counter_->End());
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glBindVertexArray(0);
-  }
+  } else if (options.count_fragments && (fragment_counter_ || FragmentCounter::Available()))
+    stats.fragments = 0;  // nothing to draw
   if (draw.finish) glFinish();
   CheckGl("render: drawing the tree");
   stats.frame_ms = Ms(start, Clock::now());

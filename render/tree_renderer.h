@@ -1,12 +1,11 @@
 // Draws a .vtree asset with OpenGL (Reche 2004 / Linz 2006 billboard clouds).
 //
 // Built once per asset: the cells of every level (centre, side) and the billboard records
-// (colour tile, alpha tile) as shader storage buffers, the DXT5 atlas as one
-// GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear filtering, no mipmaps: tiles are packed edge
-// to edge). Each frame: the two input views nearest in angle are chosen (SelectViews), a CPU
-// back-to-front traversal picks the cells (TraverseBackToFront, LOD), and one record per cell
-// (cell, billboard of view A, billboard of view B) goes into one buffer drawn by ONE instanced
-// draw call of camera-facing quads.
+// (colour tile, alpha tile, bit-packed as narrow as the tiles used allow) as shader storage buffers, the DXT5 atlas as
+// one GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear filtering, no mipmaps: tiles are packed edge to edge). Each
+// frame: the two input views nearest in angle are chosen (SelectViews), a CPU back-to-front traversal picks the cells
+// (TraverseBackToFront, LOD), and one record per cell (cell, billboard of view A, billboard of view B) goes into one
+// buffer drawn by ONE instanced draw call of camera-facing quads.
 //
 // Geometry: a cell's billboard for input view v is the square of side `billboard_scale` x cell
 // edge through the cell centre parallel to v's image plane, exactly what reconstruct textured.
@@ -35,6 +34,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/vtree.h"
+#include "render/fragment_counter.h"
 #include "render/framebuffer.h"
 #include "render/gl_objects.h"
 #include "render/instance_transform.h"
@@ -55,6 +55,7 @@ struct TreeRenderOptions {
                                    // on the sequence rendered before them, deterministically)
   bool tint_levels = false;        // colour each billboard by its octree level (LOD figures)
   bool nearest_view_only = false;  // draw only the nearest input view's billboards (to see what the blend adds)
+  bool count_fragments = false;    // FrameStats::fragments, where the driver can count them (FragmentCounter)
   void Check() const;
 };
 
@@ -80,6 +81,7 @@ struct FrameStats {
   int min_level = -1, max_level = -1;
   std::vector<size_t> cells_per_level;  // cells drawn at each octree level (index = level)
   ViewPair views;
+  int64_t fragments = -1;   // fragment shader invocations (options.count_fragments); -1: not counted
   double traversal_ms = 0;  // CPU traversal and record building
   double frame_ms = 0;      // traversal + upload + draw + glFinish (no read-back)
 };
@@ -118,12 +120,13 @@ class TreeRenderer {
   size_t atlas_bytes_ = 0;
   ShaderProgram program_;
   GlBuffer cells_;          // centre, side per cell (vec4)
-  GlBuffer billboards_;     // colour | alpha << 16 per billboard
+  GlBuffer billboards_;     // (colour, alpha) tile pairs, bit-packed
   GlStreamBuffer records_;  // the frame's (cell, billboard A, billboard B, 0)
   GlTexture atlas_;         // DXT5
   GlVertexArray vertex_array_;
   std::vector<uint8_t> lod_state_;  // per cell: refined in the previous frame
   std::unique_ptr<Framebuffer> target_;
+  std::unique_ptr<FragmentCounter> fragment_counter_;  // made on the first counted frame, when available
 };
 
 }  // namespace voltree

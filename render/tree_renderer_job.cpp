@@ -29,6 +29,9 @@ void RenderJobOptions::Check() const {
     Fail("render: an output folder (-o DIR) or --turntable FILE.mp4 is required");
   if (!turntable.empty() && orbit == 0)
     FailOption("RenderJobOptions.turntable", "encodes orbit frames; it cannot be used with --cameras");
+  if (max_level < -1) FailOption("RenderJobOptions.max_level", "must be an octree level, 0 or more, got ", max_level);
+  if (max_level >= 0 && IsSceneFile(asset))
+    FailOption("RenderJobOptions.max_level", "applies to a .vtree asset, not to a scene (", asset.string(), ")");
   if (!asset_folder.empty() && !IsSceneFile(asset))
     FailOption("RenderJobOptions.asset_folder", "applies to a scene (.json), not to ", asset.string());
 }
@@ -83,7 +86,8 @@ class FrameSource {
 
 class AssetSource : public FrameSource {
  public:
-  explicit AssetSource(const std::filesystem::path& path) : asset_(ReadAsset(path)), renderer_(asset_) {}
+  AssetSource(const std::filesystem::path& path, int max_level, std::vector<std::string>* notes)
+      : asset_(Load(path, max_level, notes)), renderer_(asset_) {}
   std::vector<View> Orbit(const OrbitOptions& orbit) const override { return OrbitCameras(asset_, orbit); }
   Image8 Render(const View& view, const TreeRenderOptions& options, SceneFrameStats* stats) override {
     Image8 image = renderer_.Render(view, options, &stats->trees);
@@ -93,6 +97,27 @@ class AssetSource : public FrameSource {
   GpuMemory GpuBytes() const override { return renderer_.GpuBytes(); }
 
  private:
+  // Progressive: a truncated file draws its whole levels; --max-level loads only the coarser ones.
+  static VtreeAsset Load(const std::filesystem::path& path, int max_level, std::vector<std::string>* notes) {
+    VtreeLoadReport report;
+    VtreeReadOptions read;
+    read.allow_partial = true;
+    read.max_level = max_level;
+    read.report = &report;
+    VtreeAsset asset = ReadAsset(path, read);
+    const std::string name = path.string();
+    if (report.truncated)
+      notes->push_back(
+          Str("warning: ", name, " is truncated; drawing levels 0..", report.levels_loaded - 1, ". ", report.missing));
+    if (max_level >= 0 && uint32_t(max_level) >= report.levels_in_file)
+      notes->push_back(Str("note: --max-level ", max_level, " is beyond ", name, ", whose finest level is ",
+                           report.levels_in_file - 1, "; clamped to ", report.levels_in_file - 1));
+    else if (max_level >= 0 && !report.truncated)
+      notes->push_back(Str("note: --max-level ", max_level, ": drawing levels 0..", max_level, " of ", name, "'s 0..",
+                           report.levels_in_file - 1));
+    return asset;
+  }
+
   VtreeAsset asset_;
   TreeRenderer renderer_;
 };
@@ -137,11 +162,12 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   const std::vector<View> model_cameras = options.cameras.empty() ? std::vector<View>{} : ModelCameras(options);
 
   GlContext context;
+  std::vector<std::string> notes;
   std::unique_ptr<FrameSource> source;
   if (scene) {
     source = std::make_unique<SceneSource>(*scene, options.render.billboard_scale);
   } else {
-    source = std::make_unique<AssetSource>(options.asset);
+    source = std::make_unique<AssetSource>(options.asset, options.max_level, &notes);
   }
   const std::vector<View> cameras = options.orbit > 0 ? source->Orbit(JobOrbit(options)) : model_cameras;
   std::optional<StagedDirectory> staged;
@@ -157,6 +183,7 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
 
   RenderJobResult result;
   result.renderer = context.renderer();
+  result.notes = notes;
   nlohmann::json frames = nlohmann::json::array();
   double drawn = 0, culled = 0;
   for (size_t i = 0; i < cameras.size(); ++i) {
@@ -188,6 +215,11 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   result.median_ms = Median(ms);
   const double n = double(std::max<size_t>(ms.size(), 1));
   result.mean_billboards = billboards / n;
+  double fragments = 0;
+  size_t counted = 0;
+  for (const FrameStats& s : result.stats)
+    if (s.fragments >= 0) fragments += double(s.fragments), ++counted;
+  if (counted > 0) result.mean_fragments = fragments / double(counted);
   result.mean_instances_drawn = drawn / n;
   result.mean_instances_culled = culled / n;
   result.gpu = source->GpuBytes();

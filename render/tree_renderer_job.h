@@ -22,6 +22,7 @@ struct RenderJobOptions {
   std::filesystem::path cameras;       // else: a COLMAP text model; frames named after its images
   int width = 0, height = 0;           // 0: from the cameras (orbit: 512x512)
   TreeRenderOptions render;
+  int max_level = -1;  // finest octree level loaded from a .vtree (-1: all; beyond the asset: all, with a note)
   std::filesystem::path output;     // frames folder; optional when `turntable` is given
   std::filesystem::path turntable;  // .mp4 of the orbit frames (30 fps, over the background or grey)
   bool force = false;
@@ -35,7 +36,10 @@ struct RenderJobResult {
   GpuMemory gpu;         // buffers and atlases of all assets
   double median_ms = 0;  // of FrameStats::frame_ms
   double mean_billboards = 0;
-  std::string renderer;  // GL_RENDERER
+  double mean_fragments = -1;  // fragment shader invocations per frame (render.count_fragments); -1: not available
+  std::string renderer;        // GL_RENDERER
+  // What the frames lack and why: a truncated asset's missing levels, a --max-level cap or clamp.
+  std::vector<std::string> notes;
 };
 
 // A camera's intrinsics scaled to a new image size (focal lengths and principal point).

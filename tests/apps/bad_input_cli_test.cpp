@@ -163,6 +163,19 @@ const std::vector<BadInputCase>& Cases() {
        [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
        1,
        {"--level 99", "ws/tree.vtree", "levels 0..2"}},
+      {"--level beyond the levels --max-level loads",
+       "render ws/tree.vtree --max-level 1 --level 2 -o frames",
+       [](const fs::path& d) { MakeTinyDemo(d / "ws"); },
+       1,
+       {"--level 2", "ws/tree.vtree", "levels 0..1 of its 0..2", "--max-level"}},
+      {"an asset of an older format version",
+       "info old.vtree",
+       [](const fs::path& d) {
+         // Format version 1's magic and version: 10-byte billboard records, the atlas last.
+         WriteFileAtomic(d / "old.vtree", std::string("VTREE\0\0\0\x01\0\0\0", 12) + std::string(40, 'x'));
+       },
+       1,
+       {"old.vtree", "format version 1", "reads version 2", "must be rebuilt"}},
       {"a codebook larger than the billboards allow (a warning)",
        "compress ws --codebook 65536 -o small.vtree --quiet",
        [](const fs::path& d) { MakeTinyDemo(d / "ws"); },

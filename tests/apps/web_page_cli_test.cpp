@@ -250,13 +250,16 @@ TEST_F(WebPage, CorruptAssetShowsAReadableError) {
 TEST_F(WebPage, UnknownFormatVersionNamesTheExpectedOne) {
   const fs::path page = WritePage(Asset().string(), "version");
   EditData(page, [](std::string& data) {
-    // "VTREE\0\0\0" + u32 version 1 in base64 is "VlRSRUUAAAABAAAA"; version 2 is "...ACAAAA".
-    const size_t at = data.find("VlRSRUUAAAABAAAA");
+    // "VTREE\0\0\0" + u32 version 2 in base64 is "VlRSRUUAAAACAAAA"; version 1 (the 10-byte records) is
+    // "...ABAAAA".
+    const size_t at = data.find("VlRSRUUAAAACAAAA");
     ASSERT_NE(at, std::string::npos);
-    data.replace(at, 16, "VlRSRUUAAAACAAAA");
+    data.replace(at, 16, "VlRSRUUAAAABAAAA");
   });
   const std::string box = ErrorBox(Dom(page, ""));
-  EXPECT_NE(box.find("format version 2 is not supported (this page reads version 1"), std::string::npos) << box;
+  EXPECT_NE(box.find("format version 1 is not supported (this page reads version 2; rebuild the asset"),
+            std::string::npos)
+      << box;
 }
 
 TEST_F(WebPage, RefusesAnExistingFolderAndMissingSceneAssets) {

@@ -134,8 +134,13 @@ TEST(Vtree, WrongMagicAndVersion) {
   std::string bad_magic = bytes;
   bad_magic[0] = 'X';
   EXPECT_NE(ErrorOf(bad_magic).find("missing the VTREE magic"), std::string::npos);
-  bytes[8] = 2;
-  EXPECT_NE(ErrorOf(bytes).find("format version 2 is not supported"), std::string::npos);
+  // An asset of the first layout (10-byte billboard records) names the file, both versions and the cure.
+  bytes[8] = 1;
+  EXPECT_EQ(ErrorOf(bytes),
+            "tree.vtree: format version 1 is not supported (this build reads version 2); the asset must be rebuilt "
+            "with this voltree (voltree compress WORKSPACE --force)");
+  bytes[8] = 3;
+  EXPECT_NE(ErrorOf(bytes).find("format version 3 is not supported"), std::string::npos);
 }
 
 // Rewrites the chunk with tag `tag` (the `which`-th one) through `edit`, with a valid checksum, so
@@ -168,24 +173,49 @@ void PutU16(std::string& payload, size_t at, uint16_t value) {
   payload[at + 1] = char(value >> 8);
 }
 
+// Writes the low `bits` bits of `value` at bit `at` of `payload` (least significant bit first).
+void PutBits(std::string& payload, size_t at, uint32_t value, int bits) {
+  for (int i = 0; i < bits; ++i, ++at) {
+    const char mask = char(1 << (at % 8));
+    payload[at / 8] = (value >> i) & 1 ? char(payload[at / 8] | mask) : char(payload[at / 8] & ~mask);
+  }
+}
+
 TEST(Vtree, HugeCountsAndOutOfRangeIndices) {
   const std::string bytes = SerializeAsset(Asset());
+  // BBRD of level 2: 18 header bytes, the view masks, then 6-bit colour and 5-bit alpha indices.
+  const VtreeLevel& level = Asset().levels[2];
+  const size_t colours = 18 + (level.cells.size() * Asset().views.size() + 7) / 8;
+  const size_t alphas = colours + (level.billboards.size() * 6 + 7) / 8;
+  // The same asset with two cells of level 2 swapped: out of (z, y, x) order, stored explicitly.
+  VtreeAsset unsorted = Asset();
+  std::swap(unsorted.levels[2].cells[0], unsorted.levels[2].cells[1]);
+  const std::string explicit_bytes = SerializeAsset(unsorted);
   struct Case {
     std::string tag;
     int which;
     std::function<void(std::string&)> edit;
     std::string expected;
+    const std::string* file = nullptr;
   };
   const std::vector<Case> cases = {
-      {"CELL", 2, [](std::string& p) { PutU32(p, 8, 0xFFFFFFF0u); }, "cell count 4294967280 needs"},
-      {"BBRD", 1, [](std::string& p) { PutU32(p, 12, 0x7FFFFFFFu); }, "billboard count 2147483647 needs"},
-      {"BBRD", 2, [](std::string& p) { PutU32(p, 16, 999999); }, "billboard 0: cell 999999 out of range"},
-      {"BBRD", 2, [](std::string& p) { PutU16(p, 20, 500); }, "billboard 0: view 500 out of range [0, 12)"},
-      {"BBRD", 2, [](std::string& p) { PutU16(p, 22, 40); }, "billboard 0: colour index 40 out of range [0, 40)"},
-      {"BBRD", 2, [](std::string& p) { PutU16(p, 24, 24); }, "billboard 0: alpha index 24 out of range [0, 24)"},
+      {"CELL", 2, [](std::string& p) { PutU32(p, 8, 0xFFFFFFF0u); }, "cell count 4294967280 exceeds 64 cells"},
+      {"CELL", 2, [](std::string& p) { PutU32(p, 8, 3); }, "child masks of"},
+      {"CELL", 2, [](std::string& p) { p[13] = char(p[13] ^ 0x80); }, "child masks name"},
+      {"CELL", 2, [](std::string& p) { p[12] = 7; }, "unknown cell coding 7"},
+      {"CELL", 0, [](std::string& p) { p[12] = 1; }, "level 0 has no parent level"},
+      {"CELL", 2, [](std::string& p) { PutU16(p, 13, 4); }, "cell 0 coordinate 4 out of range [0, 4)", &explicit_bytes},
+      {"BBRD", 1, [](std::string& p) { PutU32(p, 12, 0x7FFFFFFFu); }, "billboard count 2147483647 exceeds the limit"},
+      {"BBRD", 1, [](std::string& p) { PutU32(p, 12, 1000); }, "billboard count 1000 with 8 cells of 12 views needs"},
+      {"BBRD", 2, [](std::string& p) { p[18] = char(p[18] ^ 1); }, "view masks name"},
+      {"BBRD", 2, [](std::string& p) { p[16] = 7; }, "colour indices of 7 bits, expected 6 for 40 codewords"},
+      {"BBRD", 2, [](std::string& p) { p[17] = 9; }, "alpha indices of 9 bits, expected 5 for 24 codewords"},
+      {"BBRD", 2, [=](std::string& p) { PutBits(p, 8 * colours, 40, 6); },
+       "billboard 0: colour index 40 out of range [0, 40)"},
+      {"BBRD", 2, [=](std::string& p) { PutBits(p, 8 * alphas, 24, 5); },
+       "billboard 0: alpha index 24 out of range [0, 24)"},
       {"BBRD", 0, [](std::string& p) { PutU32(p, 0, 1); }, "level index 1, expected 0"},
       {"CELL", 1, [](std::string& p) { PutU32(p, 4, 4); }, "resolution 4, expected 2"},
-      {"CELL", 2, [](std::string& p) { PutU16(p, 12, 4); }, "cell 0 coordinate 4 out of range [0, 4)"},
       {"CELL", 0, [](std::string& p) { p.replace(p.size() - 4, 4, "\xff\xff\xff\xff", 4); }, "density"},
       {"ATLS", 0, [](std::string& p) { PutU32(p, 0, 1u << 30); }, "atlas size"},
       {"ATLS", 0, [](std::string& p) { PutU32(p, 16, 3); }, "tile count 3 is less than the codebook size 40"},
@@ -209,7 +239,7 @@ TEST(Vtree, HugeCountsAndOutOfRangeIndices) {
        "views[0]: field 'position' must be an array of 3 numbers"},
   };
   for (const auto& c : cases) {
-    const std::string message = ErrorOf(EditChunk(bytes, c.tag, c.which, c.edit));
+    const std::string message = ErrorOf(EditChunk(c.file ? *c.file : bytes, c.tag, c.which, c.edit));
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.tag << ": got '" << message << "'";
     EXPECT_EQ(message.rfind("tree.vtree: chunk " + c.tag, 0), 0u) << message;
   }

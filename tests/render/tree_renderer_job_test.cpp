@@ -66,6 +66,42 @@ TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
   EXPECT_EQ(ReadFile(options.output / "frames.json"), json);
 }
 
+// Progressive assets: --max-level caps the levels loaded (beyond the asset it clamps, and says so);
+// a truncated file draws its whole levels and warns which are missing.
+TEST(RenderJob, MaxLevelAndTruncatedAssetsSayWhatIsDrawn) {
+  TempDir temp;
+  const std::string bytes = SerializeAsset(WhiteAsset());  // levels 0..1
+  WriteFileAtomic(temp.path / "tree.vtree", bytes);
+  RenderJobOptions options;
+  options.asset = temp.path / "tree.vtree";
+  options.orbit = 1;
+  options.width = 32, options.height = 32;
+  options.output = temp.path / "frames";
+  options.force = true;
+  const std::string name = options.asset.string();
+  options.max_level = 7;
+  EXPECT_EQ(RunRenderJob(options, nullptr).notes, std::vector<std::string>{"note: --max-level 7 is beyond " + name +
+                                                                           ", whose finest level is 1; clamped to 1"});
+  options.max_level = 0;
+  EXPECT_EQ(RunRenderJob(options, nullptr).notes,
+            std::vector<std::string>{"note: --max-level 0: drawing levels 0..0 of " + name + "'s 0..1"});
+  options.max_level = -1;
+  EXPECT_TRUE(RunRenderJob(options, nullptr).notes.empty());
+  // Cut inside level 1's billboards.
+  WriteFileAtomic(options.asset, bytes.substr(0, bytes.size() - 3));
+  const std::vector<std::string> notes = RunRenderJob(options, nullptr).notes;
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].rfind("warning: " + name +
+                               " is truncated; drawing levels 0..0. levels 1..1 of 0..1 are missing: "
+                               "the file ends at byte " +
+                               std::to_string(bytes.size() - 3) + ", inside the BBRD chunk of level 1",
+                           0),
+            0u)
+      << notes[0];
+  options.max_level = -2;
+  EXPECT_THROW(RunRenderJob(options, nullptr), OptionError);
+}
+
 TEST(RenderJob, CamerasFromAColmapModelNameTheFrames) {
   TempDir temp;
   WriteAsset(temp.path / "tree.vtree", WhiteAsset());

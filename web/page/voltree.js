@@ -5,7 +5,7 @@
 // No dependencies: data.js (written by `voltree web`) defines VOLTREE_DATA before this file runs.
 "use strict";
 
-const kFormatVersion = 1;  // core/vtree.h kVtreeFormatVersion
+const kFormatVersion = 2;  // core/vtree.h kVtreeFormatVersion
 
 // ---------------------------------------------------------------- the .vtree reader (core/vtree.cpp)
 
@@ -121,36 +121,97 @@ function ParseHeader(reader) {
   return asset;
 }
 
-function ParseCells(reader, index, resolution) {
+// Reads `count` fields of `bits` bits (0..16), least significant bit first (core/bit_stream.h).
+function ReadBits(bytes, count, bits) {
+  const values = new Uint32Array(count);
+  for (let i = 0, p = 0; i < count; ++i)
+    for (let k = 0; k < bits; ++k, ++p) values[i] |= ((bytes[p >> 3] >> (p & 7)) & 1) << k;
+  return values;
+}
+const BitBytes = (count, bits) => Math.ceil((count * bits) / 8);
+const IndexBits = (size) => (size <= 1 ? 0 : 32 - Math.clz32(size - 1));
+const IndexStreamBytes = (count, bits) => (bits > 8 ? count + BitBytes(count, bits - 8) : BitBytes(count, bits));
+const Popcount = (v) => { let n = 0; for (; v; v &= v - 1) ++n; return n; };
+
+// ParseCells: explicit coordinates or child masks of the level above (coding 0 or 1), then densities.
+function ParseCells(reader, index, resolution, parent, branching) {
   if (reader.U32("level index") !== index) reader.Fail(`level index differs from ${index}`);
   const stored = reader.U32("resolution");
   if (stored !== resolution) reader.Fail(`resolution ${stored}, expected ${resolution} (branching^level)`);
   const count = reader.U32("cell count");
-  if (reader.remaining !== count * 10) reader.Fail(`cell count ${count} needs ${count * 10} bytes, the chunk has ${reader.remaining}`);
-  const cells = new Uint16Array(3 * count), density = new Float32Array(count);
-  for (let i = 0; i < 3 * count; ++i) {
-    cells[i] = reader.U16("cell coordinate");
-    if (cells[i] >= resolution) reader.Fail(`cell ${Math.floor(i / 3)} coordinate ${cells[i]} out of range [0, ${resolution})`);
+  if (count > resolution ** 3) reader.Fail(`cell count ${count} exceeds ${resolution ** 3} cells of the grid`);
+  const coding = reader.Take(1, "cell coding")[0];
+  let cells;
+  if (coding === 0) {
+    if (reader.remaining !== count * 10) reader.Fail(`cell count ${count} needs ${count * 10} bytes, the chunk has ${reader.remaining}`);
+    cells = new Uint16Array(3 * count);
+    for (let i = 0; i < 3 * count; ++i) {
+      cells[i] = reader.U16("cell coordinate");
+      if (cells[i] >= resolution) reader.Fail(`cell ${Math.floor(i / 3)} coordinate ${cells[i]} out of range [0, ${resolution})`);
+    }
+  } else if (coding === 1) {
+    if (!parent) reader.Fail("cells coded as child masks, but level 0 has no parent level");
+    const maskBytes = Math.ceil(branching ** 3 / 8), children = branching ** 3;
+    if (reader.remaining !== parent.count * maskBytes + count * 4)
+      reader.Fail(`child masks of ${parent.count} parent cells and ${count} densities need ${parent.count * maskBytes + count * 4} bytes, the chunk has ${reader.remaining}`);
+    const masks = reader.Take(parent.count * maskBytes, "child masks");
+    const list = [];
+    for (let p = 0; p < parent.count; ++p) {
+      let mask = 0;
+      for (let k = 0; k < maskBytes; ++k) mask = (mask | (masks[p * maskBytes + k] << (8 * k))) >>> 0;
+      if (children < 32 && mask >>> children) reader.Fail(`parent cell ${p}: child mask names children beyond the ${children} of a cell`);
+      for (let k = 0; k < children; ++k)
+        if ((mask >>> k) & 1)
+          list.push([parent.cells[3 * p] * branching + (k % branching), parent.cells[3 * p + 1] * branching + (Math.floor(k / branching) % branching),
+                     parent.cells[3 * p + 2] * branching + Math.floor(k / (branching * branching))]);
+    }
+    if (list.length !== count) reader.Fail(`child masks name ${list.length} cells, the cell count is ${count}`);
+    list.sort((a, b) => a[2] - b[2] || a[1] - b[1] || a[0] - b[0]);  // (z, y, x), as core/vtree.cpp
+    cells = new Uint16Array(3 * count);
+    list.forEach((c, i) => cells.set(c, 3 * i));
+  } else {
+    reader.Fail(`unknown cell coding ${coding} (expected 0 explicit or 1 child masks)`);
   }
-  for (let i = 0; i < count; ++i) density[i] = reader.F32("density");
+  reader.Take(4 * count, "density");  // byte planes; the page does not use density
   return { resolution, cells, count };
 }
 
+// ParseBillboards: per cell a mask of its views, then the narrow colour and alpha index streams.
 function ParseBillboards(reader, index, asset, level) {
   if (reader.U32("level index") !== index) reader.Fail(`level index differs from ${index}`);
   reader.U64("billboards before pruning");
   const count = reader.U32("billboard count");
-  if (reader.remaining !== count * 10) reader.Fail(`billboard count ${count} needs ${count * 10} bytes, the chunk has ${reader.remaining}`);
+  const bits = reader.Take(2, "index bits");
+  const colourBits = IndexBits(asset.colourCodebook), alphaBits = IndexBits(asset.alphaCodebook);
+  if (bits[0] !== colourBits) reader.Fail(`colour indices of ${bits[0]} bits, expected ${colourBits} for ${asset.colourCodebook} codewords`);
+  if (bits[1] !== alphaBits) reader.Fail(`alpha indices of ${bits[1]} bits, expected ${alphaBits} for ${asset.alphaCodebook} codewords`);
+  const views = asset.views.length, maskBits = level.count * views;
+  const needed = BitBytes(maskBits, 1) + IndexStreamBytes(count, colourBits) + IndexStreamBytes(count, alphaBits);
+  if (reader.remaining !== needed)
+    reader.Fail(`billboard count ${count} with ${level.count} cells of ${views} views needs ${needed} bytes, the chunk has ${reader.remaining}`);
+  const masks = reader.Take(BitBytes(maskBits, 1), "view masks");
+  let present = 0;
+  for (const byte of masks) present += Popcount(byte);
+  if (present !== count) reader.Fail(`view masks name ${present} billboards, the billboard count is ${count}`);
   const billboards = new Uint32Array(4 * count);  // cell, view, colour, alpha
-  for (let i = 0; i < count; ++i) {
-    const cell = reader.U32("billboard cell"), view = reader.U16("billboard view");
-    const colour = reader.U16("billboard colour index"), alpha = reader.U16("billboard alpha index");
-    if (cell >= level.count) reader.Fail(`billboard ${i}: cell ${cell} out of range [0, ${level.count})`);
-    if (view >= asset.views.length) reader.Fail(`billboard ${i}: view ${view} out of range [0, ${asset.views.length})`);
-    if (colour >= asset.colourCodebook) reader.Fail(`billboard ${i}: colour index ${colour} out of range [0, ${asset.colourCodebook})`);
-    if (alpha >= asset.alphaCodebook) reader.Fail(`billboard ${i}: alpha index ${alpha} out of range [0, ${asset.alphaCodebook})`);
-    billboards.set([cell, view, colour, alpha], 4 * i);
-  }
+  for (let i = 0, n = 0; i < masks.length; ++i)
+    for (let k = 0; k < 8; ++k)
+      if ((masks[i] >> k) & 1) {
+        const bit = 8 * i + k;
+        if (bit >= maskBits) reader.Fail(`view masks have bits set beyond the ${maskBits} of ${level.count} cells`);
+        billboards[4 * n] = Math.floor(bit / views), billboards[4 * n + 1] = bit % views, ++n;
+      }
+  const indices = (bits, size, what, slot) => {
+    const low = bits > 8 ? reader.Take(count, what) : null;
+    const high = ReadBits(reader.Take(BitBytes(count, bits - (low ? 8 : 0)), what), count, bits - (low ? 8 : 0));
+    for (let i = 0; i < count; ++i) {
+      const value = low ? low[i] | (high[i] << 8) : high[i];
+      if (value >= size) reader.Fail(`billboard ${i}: ${what} ${value} out of range [0, ${size})`);
+      billboards[4 * i + slot] = value;
+    }
+  };
+  indices(colourBits, asset.colourCodebook, "colour index", 2);
+  indices(alphaBits, asset.alphaCodebook, "alpha index", 3);
   level.billboards = billboards;
 }
 
@@ -179,15 +240,15 @@ function ParseAsset(bytes, name) {
   file.Take(8, "magic");
   const version = file.U32("format version");
   if (version !== kFormatVersion)
-    throw new AssetError(`${name}: format version ${version} is not supported (this page reads version ${kFormatVersion}; write the page again with the voltree that made the asset)`);
+    throw new AssetError(`${name}: format version ${version} is not supported (this page reads version ${kFormatVersion}; rebuild the asset and write the page again with this voltree)`);
   const asset = ParseHeader(ReadChunk(file, name, "HEAD"));
+  asset.atlas = ParseAtlas(ReadChunk(file, name, "ATLS"), asset);  // progressive order: the atlas, then levels coarse to fine
   asset.levels = [];
   for (let i = 0, resolution = 1; i < asset.levelCount; ++i, resolution *= asset.branching) {
-    const level = ParseCells(ReadChunk(file, name, "CELL"), i, resolution);
+    const level = ParseCells(ReadChunk(file, name, "CELL"), i, resolution, asset.levels[i - 1], asset.branching);
     ParseBillboards(ReadChunk(file, name, "BBRD"), i, asset, level);
     asset.levels.push(level);
   }
-  asset.atlas = ParseAtlas(ReadChunk(file, name, "ATLS"), asset);
   if (file.remaining !== 0) throw new AssetError(`${name}: ${file.remaining} unexpected bytes after the last chunk at byte ${file.position}`);
   return asset;
 }
