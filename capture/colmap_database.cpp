@@ -57,9 +57,8 @@ std::vector<PhotoMatches> ReadPhotoMatches(const fs::path& database) {
     Fail(database.string(), ": cannot open COLMAP's database: ", raw ? sqlite3_errmsg(raw) : "out of memory");
 
   std::map<int64_t, PhotoMatches> by_id;
-  ForEachRow(db.get(), database, "SELECT image_id, name FROM images", [&](sqlite3_stmt* row) {
-    by_id[sqlite3_column_int64(row, 0)].name = Text(row, 1);
-  });
+  ForEachRow(db.get(), database, "SELECT image_id, name FROM images",
+             [&](sqlite3_stmt* row) { by_id[sqlite3_column_int64(row, 0)].name = Text(row, 1); });
   ForEachRow(db.get(), database, "SELECT image_id, rows FROM keypoints", [&](sqlite3_stmt* row) {
     const auto photo = by_id.find(sqlite3_column_int64(row, 0));
     if (photo != by_id.end()) photo->second.features = sqlite3_column_int(row, 1);

@@ -59,7 +59,7 @@ bool ProjectToMask(const View& view, const PhotoMasks& masks, const Eigen::Vecto
 // Carves `grid` with outvoting: kept when seen by at least `min_seen` photos and at most
 // `allowed` of them see it off their dilated matte.
 std::vector<uint8_t> Carve(const Grid& grid, const std::vector<View>& views, const std::vector<PhotoMasks>& masks,
-                           int min_seen, int allowed) {
+                           int min_seen, int allowed, double allowed_share) {
   std::vector<uint8_t> kept(grid.Size(), 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, grid.cells.z()), [&](const tbb::blocked_range<int>& slices) {
     for (int z = slices.begin(); z < slices.end(); ++z)
@@ -73,7 +73,7 @@ std::vector<uint8_t> Carve(const Grid& grid, const std::vector<View>& views, con
             ++seen;
             carved += masks[v].dilated.at<uint8_t>(pixel) == 0;
           }
-          kept[grid.Index(x, y, z)] = carved <= allowed && seen >= min_seen;
+          kept[grid.Index(x, y, z)] = carved <= allowed && carved <= allowed_share * seen && seen >= min_seen;
         }
   });
   return kept;
@@ -133,7 +133,7 @@ CarvedHull CarveTwice(const std::vector<View>& views, const std::vector<Image8>&
   hull.grid = MakeGrid(target - Eigen::Vector3d::Constant(distance), target + Eigen::Vector3d::Constant(distance),
                        options.resolution);
   hull.masks = MakeAllMasks(views, mattes, options, hull.grid);
-  hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed);
+  hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed, options.outvoted_share_of_seen);
   Eigen::Vector3i low, high;
   if (KeptBounds(hull.grid, hull.kept, &low, &high)) {
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(2 * hull.grid.voxel);
@@ -141,7 +141,7 @@ CarvedHull CarveTwice(const std::vector<View>& views, const std::vector<Image8>&
                          hull.grid.min + hull.grid.voxel * (high + Eigen::Vector3i::Ones()).cast<double>() + margin,
                          options.resolution);
     hull.masks = MakeAllMasks(views, mattes, options, hull.grid);
-    hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed);
+    hull.kept = Carve(hull.grid, views, hull.masks, min_seen, allowed, options.outvoted_share_of_seen);
   }
   return hull;
 }
@@ -259,6 +259,8 @@ void MatteConsistencyOptions::Check() const {
   if (!(min_seen_fraction > 0 && min_seen_fraction <= 1))
     Fail("min seen fraction must be in (0, 1], got ", min_seen_fraction);
   if (max_side < 16) Fail("comparison size must be at least 16, got ", max_side);
+  if (!(outvoted_share_of_seen > 0 && outvoted_share_of_seen <= 1))
+    Fail("outvoted share of seen must be in (0, 1], got ", outvoted_share_of_seen);
   if (!(min_recall >= 0 && min_recall <= 1)) Fail("min recall must be in [0, 1], got ", min_recall);
   if (min_photos < 2) Fail("consistency min_photos must be at least 2, got ", min_photos);
   if (!(min_precision >= 0 && min_precision <= 1)) Fail("min precision must be in [0, 1], got ", min_precision);

@@ -1,7 +1,10 @@
 // Mattes from the whole capture: once the cameras are known, the photos whose automatic matte
 // disagrees with the others are matted again inside the visual hull of the photos that agree.
+//   0. Background told by parallax (backdrop.h: sky and ground a neighbouring photo shows again)
+//      is taken out of every matte, and stays background in every re-matting.
 //   1. Trust: majority voting over voxels; a photo that often disagrees with the majority (misses
-//      what most see as tree, or holds what most see as background) is not trusted.
+//      what most see as tree, or holds what most see as background) is not trusted. When fewer
+//      than a quarter are trusted, the majority hull of all photos bounds the tree instead.
 //   2. The hull of the trusted photos alone, projected into each untrusted photo, bounds the
 //      tree there: outside it (grown by a band) is background whatever its colour (skyline,
 //      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
@@ -16,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "capture/matte/backdrop.h"
 #include "capture/matte/consistency.h"
 #include "capture/matte/options.h"
 #include "core/camera.h"
@@ -30,16 +34,23 @@ struct HullRematteOptions {
   // most this many times the median photo's background voxels (matte_consistency.h).
   double max_carve_fraction = 0.15;
   double max_keep_ratio = 3.0;
-  double min_trusted_fraction = 0.25;  // fewer trusted photos: nothing is changed
+  double min_trusted_fraction = 0.25;  // fewer trusted photos: the hull of all by majority instead
+  double majority_share = 0.45;        // that hull: a voxel at most this share of its photos call empty
   double confident_alpha = 0.95;       // the old matte's tree kept as known foreground
   int guard_passes = 3;                // re-matting of the photos the guard would name, at most
   MatteOptions matte;                  // how the unknown is solved
-  void Check() const;                  // throws Error naming the field
+  // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
+  // background when a photo is matted again.
+  bool use_backdrop = true;
+  BackdropOptions backdrop;
+  void Check() const;  // throws Error naming the field
 };
 
 struct HullRematteResult {
   std::vector<std::string> trusted, rematted;
-  std::vector<std::string> votes;  // per photo: "name carves/majority keeps"
+  std::vector<std::string> changed;  // every photo whose matte changed (re-matted or backdrop taken out)
+  bool majority_hull = false;        // too few were trusted: the majority hull of all bounded the tree
+  std::vector<std::string> votes;    // per photo: "name carves/majority keeps"
 };
 
 // `photos[i]` (RGB) and `mattes[i]` (1 channel, replaced for re-matted photos) belong to views[i].
