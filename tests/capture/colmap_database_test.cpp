@@ -38,8 +38,7 @@ fs::path WriteDatabase() {
   Execute(db, "INSERT INTO images VALUES (1, 'a.png', 1), (2, 'b.png', 1), (3, 'c.png', 1), (4, 'd.png', 1)");
   Execute(db, "INSERT INTO keypoints VALUES (1, 900, 6, NULL), (2, 800, 6, NULL), (3, 700, 6, NULL), (4, 0, 6, NULL)");
   Execute(db, "INSERT INTO two_view_geometries VALUES (" + std::to_string(PairId(1, 2)) + ", 250, 2, NULL), (" +
-                  std::to_string(PairId(3, 2)) + ", 9, 2, NULL), (" + std::to_string(PairId(1, 3)) +
-                  ", 0, 2, NULL)");
+                  std::to_string(PairId(3, 2)) + ", 9, 2, NULL), (" + std::to_string(PairId(1, 3)) + ", 0, 2, NULL)");
   sqlite3_close(db);
   return path;
 }
