@@ -22,8 +22,8 @@ struct BackdropOptions {
   int far_patch_radius = 0;
   int ground_patch_radius = 2;
   double max_difference = 0.04;  // mean absolute difference (sRGB, 0..1) still called the same
-  double ground_z = 0;         // height of the ground plane in the views' frame (the tree frame: 0)
-  void Check() const;          // throws OptionError naming the field
+  double ground_z = 0;           // height of the ground plane in the views' frame (the tree frame: 0)
+  void Check() const;            // throws OptionError naming the field
 };
 
 // 255 where photo `target` is explained by the backdrop or the ground in a neighbouring photo, 0

@@ -30,7 +30,8 @@ class Backdrop : public ::testing::Test {
     dir_ = fs::path(::testing::TempDir()) / Str("voltree_backdrop_", ::getpid());
     fs::remove_all(dir_);
     // 16 photos in two rings (45 degrees apart within a ring) at 192²; about a second.
-    ASSERT_EQ(test::Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --quiet -o " + dir_.string()), 0);
+    ASSERT_EQ(test::Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --quiet -o " + dir_.string()),
+              0);
     set_.views = ReadColmapModel(dir_ / "sparse").Views();
     for (const View& view : set_.views) {
       set_.photos.push_back(ReadImage8(dir_ / "images" / view.name, 3));
