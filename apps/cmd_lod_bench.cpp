@@ -61,9 +61,11 @@ std::string JoinSizes(const std::vector<int>& sizes) {
 void AddLodBenchCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "lod-bench",
-      "Measure published leaf-pruning levels of detail (stochastic pruning with Cook et al.'s 1/lambda "
-      "scaling, Neubert et al.'s PR-optimal scaling) against the full mesh over a sweep of screen sizes, from the "
-      "studio's held-out ring and from above. Writes table.md, lod_bench.json and plots/");
+      "Measure published leaf-pruning levels of detail (stochastic pruning unscaled and with Cook et al.'s "
+      "1/lambda scaling, Neubert et al.'s PR-optimal scaling, pruning ordered by viewpoint mutual information; "
+      "with --asset, a voltree asset of the same tree) against the full mesh over a sweep of screen sizes, from the "
+      "studio's held-out ring and from above. Writes table.md, lod_bench.json and plots/. "
+      "Example: voltree lod-bench oak -o oak_lod");
   auto args = std::make_shared<LodBenchArguments>();
   LodBenchArguments* bound = args.get();  // what the parsers write into; `args` owns it
   command->add_option("TREE", args->tree.tree, "A preset (" + TreePresetList() + ") or a mesh file (.gltf, .glb, .obj)")
