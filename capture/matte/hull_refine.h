@@ -49,8 +49,10 @@ struct HullRematteOptions {
 struct HullRematteResult {
   std::vector<std::string> trusted, rematted;
   std::vector<std::string> changed;  // every photo whose matte changed (re-matted or backdrop taken out)
-  bool majority_hull = false;        // too few were trusted: the majority hull of all bounded the tree
-  std::vector<std::string> votes;    // per photo: "name carves/majority keeps"
+  // Too few were trusted: the majority hull of all bounded the tree, in every pass after the first
+  // too, and its core was never taken as tree.
+  bool majority_hull = false;
+  std::vector<std::string> votes;  // per photo: "name carves/majority keeps"
 };
 
 // `photos[i]` (RGB) and `mattes[i]` (1 channel, replaced for re-matted photos) belong to views[i].
