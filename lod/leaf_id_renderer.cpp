@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 #include "core/srgb.h"
-#include "lod/depth_range.h"
+#include "samples/depth_range.h"
 #include "render/gl_context.h"
 #include "samples/studio_projection.h"
 
@@ -46,18 +46,6 @@ struct IdVertex {
   float uv[2];
   float id;
 };
-
-float Cutoff(const Material& material) {
-  switch (material.alpha_mode) {
-    case AlphaMode::kOpaque:
-      return -1.0f;
-    case AlphaMode::kMask:
-      return material.alpha_cutoff;
-    case AlphaMode::kBlend:
-      return 0.5f;
-  }
-  return -1.0f;
-}
 
 }  // namespace
 
@@ -138,7 +126,7 @@ std::vector<uint32_t> LeafIdRenderer::VisiblePixels(const View& view, const std:
     program_.Set("uHasTexture", material.texture >= 0 ? 1 : 0);
     if (material.texture >= 0) textures_[material.texture].Bind(0);
     program_.Set("uBaseAlpha", material.base_color[3]);
-    program_.Set("uAlphaCutoff", Cutoff(material));
+    program_.Set("uAlphaCutoff", AlphaCutoff(material));
     if (!range.leafy) {
       glDrawArrays(GL_TRIANGLES, static_cast<GLint>(range.first_vertex), static_cast<GLsizei>(range.vertex_count));
       continue;

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <string>
 
-#include "lod/depth_range.h"
+#include "samples/depth_range.h"
 #include "render/gl.h"
 #include "samples/studio_layers.h"
 

@@ -3,25 +3,11 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "samples/depth_range.h"
 #include "samples/studio_rig.h"
 
 namespace voltree {
 namespace {
-
-// Depth range that holds the whole tree: camera z of the bounds' corners, with slack.
-std::pair<double, double> DepthRange(const View& view, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  double nearest = 1e300, farthest = -1e300;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
-                            (corner & 4) ? hi.z() : lo.z());
-    const double z = view.pose.ToCamera(p).z();
-    nearest = std::min(nearest, z);
-    farthest = std::max(farthest, z);
-  }
-  farthest = std::max(farthest, 1e-3) * 1.05 + 1e-3;
-  const double near = std::max(nearest * 0.95, farthest * 1e-4);
-  return {near, farthest};
-}
 
 // The realistic backdrop's clutter, kept outside the camera ring; none for the plain one.
 ClutterLayout StudioClutter(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const StudioOptions& options) {
@@ -52,7 +38,7 @@ ImageF StudioRenderer::RenderTree(const View& view) {
   const Framebuffer& target = Target(view, options_.supersample, tree_target_);
   target.Bind();
   target.Clear(0, 0, 0, 0);
-  const auto [near, far] = DepthRange(view, bounds_min_, bounds_max_);
+  const auto [near, far] = BoxDepthRange(view, bounds_min_, bounds_max_);
   tree_.Draw(view, lighting_, near, far);
   return downsampler_.Downsample(target, options_.supersample);
 }
@@ -61,7 +47,7 @@ ImageF StudioRenderer::RenderParts(const View& view) {
   const Framebuffer& target = Target(view, options_.supersample, tree_target_);
   target.Bind();
   target.Clear(0, 0, 0, 0);
-  const auto [near, far] = DepthRange(view, bounds_min_, bounds_max_);
+  const auto [near, far] = BoxDepthRange(view, bounds_min_, bounds_max_);
   tree_.Draw(view, lighting_, near, far, /*parts=*/true);
   return downsampler_.Downsample(target, options_.supersample);
 }

@@ -99,18 +99,6 @@ struct PackedVertex {
   float tint[3];
 };
 
-float AlphaCutoff(const Material& material) {
-  switch (material.alpha_mode) {
-    case AlphaMode::kOpaque:
-      return -1.0f;
-    case AlphaMode::kMask:
-      return material.alpha_cutoff;
-    case AlphaMode::kBlend:
-      return 0.5f;  // supersampling turns the cut edges into fractional alpha
-  }
-  return -1.0f;
-}
-
 }  // namespace
 
 StudioTreeRenderer::StudioTreeRenderer(const TreeMesh& mesh) : materials_(mesh.materials) {

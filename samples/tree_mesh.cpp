@@ -6,6 +6,18 @@
 
 namespace voltree {
 
+float AlphaCutoff(const Material& material) {
+  switch (material.alpha_mode) {
+    case AlphaMode::kOpaque:
+      return -1.0f;
+    case AlphaMode::kMask:
+      return material.alpha_cutoff;
+    case AlphaMode::kBlend:
+      return 0.5f;
+  }
+  return -1.0f;
+}
+
 size_t TreeMesh::TriangleCount() const {
   size_t count = 0;
   for (const MeshGroup& group : groups) count += group.indices.size() / 3;

@@ -36,6 +36,10 @@ struct MeshGroup {
   std::vector<uint32_t> indices;  // three per triangle, into TreeMesh::vertices
 };
 
+// The alpha below which a fragment of this material is discarded; -1 for opaque materials. Blended
+// materials are cut at 0.5: supersampling turns the cut edges into fractional alpha.
+float AlphaCutoff(const Material& material);
+
 struct TreeMesh {
   std::vector<MeshVertex> vertices;
   std::vector<MeshGroup> groups;

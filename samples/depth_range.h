@@ -1,5 +1,5 @@
-// The depth range in which a camera sees a box: the camera depths of its corners, with slack, as
-// the studio's renderer uses it.
+// The depth range in which a camera sees a box: the camera depths of its corners, with slack. The
+// studio and the LOD bench draw their meshes with it.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-#include "lod/depth_range.h"
+#include "samples/depth_range.h"
 
 #include <algorithm>
 
