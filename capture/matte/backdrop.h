@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "capture/matte/consistency.h"
 #include "core/camera.h"
 #include "core/image.h"
 
@@ -23,7 +24,15 @@ struct BackdropOptions {
   int ground_patch_radius = 2;
   double max_difference = 0.04;  // mean absolute difference (sRGB, 0..1) still called the same
   double ground_z = 0;           // height of the ground plane in the views' frame (the tree frame: 0)
-  void Check() const;            // throws OptionError naming the field
+  // Behind the tree (ExplainedBehindHull): distant trees, hills and houses stand at no one depth.
+  int behind_neighbours = 4;      // a sweep along the line is cheap once the hull rules out the tree
+  int behind_patch_radius = 2;    // textured clutter: patches, as for the ground
+  double behind_step_pixels = 1;  // the sweep's step along the neighbour's epipolar line
+  // Neighbours that must show the patch at one depth. With one, among a thousand depths some
+  // patch of grass or of a distant trunk matched the aspen's thin trunk, and the trunk was lost
+  // (a veto by the neighbours that see that depth and show something else did not save it).
+  int behind_min_views = 2;
+  void Check() const;  // throws OptionError naming the field
 };
 
 // 255 where photo `target` is explained by the backdrop or the ground in a neighbouring photo, 0
@@ -32,5 +41,16 @@ struct BackdropOptions {
 // ground counts as hidden.
 Image8 ExplainedByBackdrop(const std::vector<View>& views, const std::vector<Image8>& photos,
                            const std::vector<Image8>& mattes, size_t target, const BackdropOptions& options);
+
+// The third hypothesis, once a visual hull bounds the tree: what lies behind it. Each pixel of
+// `region` in photo `target` not yet explained is swept along its ray from the hull's far side
+// (hulls[target].far_depth) out to infinity, or to the ground where the ray meets it first; a
+// neighbouring photo that shows the same patch where its own hull does not hide it explains it.
+// The tree itself stands in front of every depth swept, so it is never explained: its patch would
+// have to reappear outside the neighbour's hull. 255 where explained, 0 elsewhere; `hulls[i]`
+// belongs to views[i].
+Image8 ExplainedBehindHull(const std::vector<View>& views, const std::vector<Image8>& photos,
+                           const std::vector<HullProjection>& hulls, size_t target, const Image8& region,
+                           const BackdropOptions& options);
 
 }  // namespace voltree

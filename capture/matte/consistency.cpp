@@ -159,9 +159,9 @@ bool OnSurface(const Grid& grid, const std::vector<uint8_t>& kept, int x, int y,
 
 }  // namespace
 
-std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
-                                const std::vector<bool>& trusted, const std::vector<View>& targets,
-                                const MatteConsistencyOptions& options) {
+std::vector<HullProjection> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                        const std::vector<bool>& trusted, const std::vector<View>& targets,
+                                        const MatteConsistencyOptions& options) {
   options.Check();
   std::vector<View> carve_views;
   std::vector<Image8> carve_mattes;
@@ -179,13 +179,14 @@ std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vecto
       for (int x = 0; x < grid.cells.x(); ++x)
         if (hull.kept[grid.Index(x, y, z)] && OnSurface(grid, hull.kept, x, y, z))
           surface.push_back(grid.Center(x, y, z));
-  std::vector<Image8> projections(targets.size());
+  std::vector<HullProjection> projections(targets.size());
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t v) {
     const View& view = targets[v];
     cv::Mat mask = cv::Mat::zeros(view.camera.height, view.camera.width, CV_8UC1);
     for (const Eigen::Vector3d& point : surface) {
       Eigen::Vector2d pixel;
       const double depth = view.pose.ToCamera(point).z();
+      projections[v].far_depth = std::max(projections[v].far_depth, depth + grid.voxel * 0.87);
       if (depth <= 0 || !view.WorldToPixel(point, &pixel)) continue;
       const int radius = int(std::ceil(view.camera.FocalX() * grid.voxel * 0.87 / depth));
       cv::circle(mask, cv::Point(int(std::floor(pixel.x())), int(std::floor(pixel.y()))), radius, 255, cv::FILLED);
@@ -196,7 +197,7 @@ std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vecto
     cv::drawContours(mask, contours, -1, 255, cv::FILLED);
     Image8 out(view.camera.width, view.camera.height, 1);
     std::copy(mask.datastart, mask.dataend, out.pixels.begin());
-    projections[v] = std::move(out);
+    projections[v].mask = std::move(out);
   });
   return projections;
 }

@@ -63,13 +63,19 @@ struct MinorityVotes {
 std::vector<MinorityVotes> CountMinorityVotes(const std::vector<View>& views, const std::vector<Image8>& mattes,
                                               const MatteConsistencyOptions& options);
 
+// The visual hull as one photo sees it: `mask` at its camera's size, 255 where the hull is, 0
+// elsewhere; `far_depth` the camera depth (z) behind which no part of the hull lies.
+struct HullProjection {
+  Image8 mask;
+  double far_depth = 0;
+};
+
 // The visual hull carved from the `trusted` photos' mattes (at least 3), projected into each of
-// `targets` at its camera's size: 255 where the hull is, 0 elsewhere. The hull holds the tree
-// when the trusted mattes and the cameras are right, so the projection bounds the tree in any
-// photo.
-std::vector<Image8> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
-                                const std::vector<bool>& trusted, const std::vector<View>& targets,
-                                const MatteConsistencyOptions& options);
+// `targets`. The hull holds the tree when the trusted mattes and the cameras are right, so the
+// projection bounds the tree in any photo.
+std::vector<HullProjection> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
+                                        const std::vector<bool>& trusted, const std::vector<View>& targets,
+                                        const MatteConsistencyOptions& options);
 
 // Throws Error naming the photos below the limits (worst first), what their numbers mean and what
 // to try; `mattes_folder` is named in the message.

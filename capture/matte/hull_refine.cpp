@@ -31,14 +31,21 @@ void HullRematteOptions::Check() const {
 
 namespace {
 
+cv::Mat Disc(int radius) {
+  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
+}
+
+// How far beyond the hull's projection a photo is still matted (the hull is coarse).
+int HullBand(const Image8& photo) { return std::max(2, std::min(photo.width, photo.height) / 128); }
+
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
 Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image8& hull, const Image8* backdrop,
                        bool seed_core, const HullRematteOptions& options) {
   const cv::Mat rgb = matte::View(photo);
   const cv::Mat old_alpha = matte::View(old_matte);
   const cv::Mat inside = matte::View(hull);
-  const int band = std::max(2, std::min(photo.width, photo.height) / 128);
-  const auto disc = [](int r) { return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)); };
+  const int band = HullBand(photo);
+  const auto disc = Disc;
   cv::Mat grown, shrunk;
   cv::dilate(inside, grown, disc(band));
   cv::erode(inside, shrunk, disc(2 * band));
@@ -73,6 +80,20 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
 
 namespace {
 
+// `backdrop` (far and ground, explained before the hull was known) plus what lies behind the hull
+// near its projection, where the photo is matted again.
+Image8 WithBackgroundBehindHull(const std::vector<View>& views, const std::vector<Image8>& photos,
+                                const std::vector<HullProjection>& hulls, size_t target, const Image8& backdrop,
+                                const BackdropOptions& options) {
+  cv::Mat region;
+  cv::dilate(matte::View(hulls[target].mask), region, Disc(HullBand(photos[target])));
+  region.setTo(0, matte::View(backdrop) != 0);
+  const Image8 behind = ExplainedBehindHull(views, photos, hulls, target, matte::ToImage8(region), options);
+  cv::Mat both;
+  cv::bitwise_or(matte::View(backdrop), matte::View(behind), both);
+  return matte::ToImage8(both);
+}
+
 // Re-mattes the photos not `trusted` inside the hull of the trusted ones; returns their names
 // (none when too few are trusted).
 std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const std::vector<Image8>& photos,
@@ -98,11 +119,19 @@ std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const 
     carvers.assign(views.size(), true);
     *majority_hull = true;
   }
-  const std::vector<Image8> hulls = ProjectHull(views, mattes, carvers, targets, carving);
+  // The sweep behind the hull looks into the neighbours' hulls too: project it into every photo.
+  const bool sweep = !backdrops.empty() && options.backdrop.behind_neighbours > 0;
+  const std::vector<HullProjection> hulls = ProjectHull(views, mattes, carvers, sweep ? views : targets, carving);
   std::vector<Image8> rematted(targets.size());
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t t) {
     const size_t i = target_index[t];
-    rematted[t] = MatteInsideHull(photos[i], mattes[i], hulls[t], backdrops.empty() ? nullptr : &backdrops[i],
+    const Image8& hull = hulls[sweep ? i : t].mask;
+    Image8 background;
+    if (sweep) background = WithBackgroundBehindHull(views, photos, hulls, i, backdrops[i], options.backdrop);
+    rematted[t] = MatteInsideHull(photos[i], mattes[i], hull,
+                                  sweep               ? &background
+                                  : backdrops.empty() ? nullptr
+                                                      : &backdrops[i],
                                   /*seed_core=*/!*majority_hull, options);
   });
   std::vector<std::string> names;

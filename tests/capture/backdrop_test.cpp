@@ -3,6 +3,7 @@
 // little of the tree. The tree's own matte in the neighbour is what keeps leaves seen from above
 // from matching the leaves that hide the same ground in the next photo.
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 
 #include "capture/colmap_binary.h"
 #include "capture/matte/backdrop.h"
+#include "capture/matte/consistency.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
 #include "core/image.h"
@@ -83,6 +85,55 @@ TEST_F(Backdrop, TheNeighboursTreeHidesItsGround) {
   std::printf("tree explained without the neighbours' mattes %.4f, with %.4f\n", tree, tree_with);
   EXPECT_GT(tree, 2 * tree_with);
   EXPECT_GT(background, background_with - 0.01);
+}
+
+// Behind the hull, near the tree where matting is hard: distant trees, bushes and hills the far
+// and ground hypotheses leave. The hull is carved from the true mattes; the pixels asked are
+// those near its projection that neither hypothesis explained.
+struct BehindShares {
+  double background = 0, tree = 0;
+};
+BehindShares ExplainedBehindShares(const StudioSet& set, const BackdropOptions& options) {
+  const std::vector<bool> all(set.views.size(), true);
+  const std::vector<HullProjection> hulls =
+      ProjectHull(set.views, set.mattes, all, set.views, MatteConsistencyOptions{});
+  double background = 0, background_explained = 0, tree = 0, tree_explained = 0;
+  for (size_t i = 0; i < set.views.size(); ++i) {
+    const Image8 backdrop = ExplainedByBackdrop(set.views, set.photos, set.mattes, i, options);
+    Image8 region = hulls[i].mask;
+    const int w = region.width, h = region.height;
+    for (int y = 0; y < h; ++y)  // the hull grown by 2 pixels, as re-matting grows it
+      for (int x = 0; x < w; ++x)
+        for (int dy = -2; dy <= 2; ++dy)
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int sx = std::clamp(x + dx, 0, w - 1), sy = std::clamp(y + dy, 0, h - 1);
+            if (hulls[i].mask.pixels[size_t(sy) * w + sx] != 0) region.pixels[size_t(y) * w + x] = 255;
+          }
+    for (size_t p = 0; p < region.pixels.size(); ++p)
+      if (backdrop.pixels[p] != 0) region.pixels[p] = 0;
+    const Image8 behind = ExplainedBehindHull(set.views, set.photos, hulls, i, region, options);
+    const Image8& truth = set.mattes[i];
+    for (size_t p = 0; p < truth.pixels.size(); ++p) {
+      if (region.pixels[p] == 0) continue;
+      if (truth.pixels[p] == 0) {
+        ++background;
+        background_explained += behind.pixels[p] != 0;
+      } else if (truth.pixels[p] > 127) {
+        ++tree;
+        tree_explained += behind.pixels[p] != 0;
+      }
+    }
+  }
+  return {background_explained / std::max(background, 1.0), tree_explained / std::max(tree, 1.0)};
+}
+
+// Measured: 0.156 of that background explained, none of the tree (with one neighbour's word
+// instead of two: 0.370 and still none here, but the aspen's thin trunk was lost that way).
+TEST_F(Backdrop, BehindTheHullExplainsTheClutterAndNotTheTree) {
+  const BehindShares shares = ExplainedBehindShares(set_, BackdropOptions{});
+  std::printf("behind the hull: background %.3f, tree %.4f\n", shares.background, shares.tree);
+  EXPECT_GT(shares.background, 0.1);
+  EXPECT_LT(shares.tree, 0.002);
 }
 
 TEST(BackdropOptions, CheckNamesTheField) {
