@@ -9,7 +9,7 @@
 //      tree there: outside it (grown by a band) is background whatever its colour (skyline,
 //      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
 //      is unknown and solved from the photo's colours (alphamat::infoFlow by default). Near it,
-//      what two neighbours show at one depth behind the hull is background too (backdrop.h).
+//      what two neighbours show at one depth behind the hull is then taken out (backdrop.h).
 //   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
 //      matted again the same way inside the hull of those it passes.
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
