@@ -157,6 +157,42 @@ bool OnSurface(const Grid& grid, const std::vector<uint8_t>& kept, int x, int y,
   return false;
 }
 
+// The 6-connected parts of the kept voxels, largest first.
+std::vector<HullPart> ConnectedParts(const Grid& grid, const std::vector<uint8_t>& kept) {
+  std::vector<uint8_t> visited(kept.size(), 0);
+  std::vector<HullPart> parts;
+  std::vector<Eigen::Vector3i> stack;
+  for (int z = 0; z < grid.cells.z(); ++z)
+    for (int y = 0; y < grid.cells.y(); ++y)
+      for (int x = 0; x < grid.cells.x(); ++x) {
+        if (!kept[grid.Index(x, y, z)] || visited[grid.Index(x, y, z)]) continue;
+        HullPart part;
+        visited[grid.Index(x, y, z)] = 1;
+        stack.assign(1, Eigen::Vector3i(x, y, z));
+        while (!stack.empty()) {
+          const Eigen::Vector3i cell = stack.back();
+          stack.pop_back();
+          ++part.voxels;
+          part.center += grid.Center(cell.x(), cell.y(), cell.z());
+          for (int axis = 0; axis < 3; ++axis)
+            for (int step : {-1, 1}) {
+              Eigen::Vector3i next = cell;
+              next[axis] += step;
+              if (next[axis] < 0 || next[axis] >= grid.cells[axis]) continue;
+              const size_t index = grid.Index(next.x(), next.y(), next.z());
+              if (!kept[index] || visited[index]) continue;
+              visited[index] = 1;
+              stack.push_back(next);
+            }
+        }
+        part.center /= double(part.voxels);
+        parts.push_back(part);
+      }
+  std::stable_sort(parts.begin(), parts.end(),
+                   [](const HullPart& a, const HullPart& b) { return a.voxels > b.voxels; });
+  return parts;
+}
+
 }  // namespace
 
 std::vector<HullProjection> ProjectHull(const std::vector<View>& views, const std::vector<Image8>& mattes,
@@ -253,6 +289,7 @@ std::vector<MinorityVotes> CountMinorityVotes(const std::vector<View>& views, co
 }
 
 void MatteConsistencyOptions::Check() const {
+  if (!(max_second_part > 0 && max_second_part <= 1)) Fail("max second part must be in (0, 1], got ", max_second_part);
   if (resolution < 8 || resolution > 512) Fail("consistency hull resolution must be 8..512, got ", resolution);
   if (!(matte_threshold > 0 && matte_threshold < 1)) Fail("matte threshold must be in (0, 1), got ", matte_threshold);
   if (!(outvoted_fraction >= 0 && outvoted_fraction < 0.5))
@@ -280,6 +317,7 @@ MatteConsistency MeasureMatteConsistency(const std::vector<View>& views, const s
   MatteConsistency result;
   for (uint8_t k : kept) result.hull_voxels += k;
   result.voxel_size = grid.voxel;
+  result.parts = ConnectedParts(grid, kept);
 
   result.photos.resize(views.size());
   tbb::parallel_for(size_t(0), views.size(), [&](size_t v) {
@@ -320,6 +358,18 @@ void CheckMatteConsistency(const MatteConsistency& consistency, const MatteConsi
          " disagree with the cameras: no point is on the tree in (nearly) every "
          "photo, so their visual hull is empty. Check that each matte belongs to the photo of the same name, and "
          "that the cameras (sparse/) are those of these photos");
+  const std::vector<HullPart>& parts = consistency.parts;
+  if (parts.size() >= 2 && double(parts[1].voxels) >= options.max_second_part * double(parts[0].voxels)) {
+    const auto round = [](double v) { return std::round(v * 100) / 100; };
+    const auto where = [&](const Eigen::Vector3d& c) {
+      return Str("(", round(c.x()), ", ", round(c.y()), ", ", round(c.z()), ")");
+    };
+    Fail("the mattes in ", mattes_folder, " hold two separate objects: their visual hull falls into parts of ",
+         parts[0].voxels, " and ", parts[1].voxels, " voxels, around ", where(parts[0].center), " and ",
+         where(parts[1].center),
+         " in the cameras' frame. voltree captures one tree at a time: photograph it alone, or bring mattes "
+         "that keep only the tree (the workspace's mattes/ folder)");
+  }
   std::vector<PhotoConsistency> bad;
   for (const PhotoConsistency& photo : consistency.photos)
     if (photo.recall < options.min_recall || photo.precision < options.min_precision) bad.push_back(photo);

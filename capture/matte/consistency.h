@@ -31,6 +31,9 @@ struct MatteConsistencyOptions {
   // are too alike to tell apart (oak, two mattes swapped: 0.92 / 0.92 at worst).
   double min_recall = 0.9;
   double min_precision = 0.9;
+  // The hull in separate parts, the second at least this fraction of the largest: two objects
+  // stand in the ring (two trees, a tree and a post), and one asset cannot hold them apart.
+  double max_second_part = 0.2;
   // Fewer photos carve a hull too loose to judge a matte by (4 true mattes of the young oak at
   // 32²: precision 0.68-0.87): the guard then skips this check and says so.
   int min_photos = 8;
@@ -42,10 +45,17 @@ struct PhotoConsistency {
   double recall = 0, precision = 0;
 };
 
+// A connected part of the visual hull.
+struct HullPart {
+  size_t voxels = 0;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // of its voxels, in the views' frame
+};
+
 struct MatteConsistency {
   std::vector<PhotoConsistency> photos;  // in the order of the views
   size_t hull_voxels = 0;
   double voxel_size = 0;
+  std::vector<HullPart> parts;  // largest first
 };
 
 // `mattes[i]` is views[i]'s 1-channel matte (any size; scaled to the camera). Views in a +Z-up
