@@ -129,7 +129,8 @@ void AddPiece(const BarkGraph& graph, const std::vector<int>& piece, int root, f
   }
   // Parts of each band: vertices of the band joined by the edges within it.
   std::map<int, int> band_of, local;
-  for (const auto& [v, d] : distance) band_of[v] = static_cast<int>(d / band), local[v] = static_cast<int>(local.size());
+  for (const auto& [v, d] : distance)
+    band_of[v] = static_cast<int>(d / band), local[v] = static_cast<int>(local.size());
   UnionFind parts(local.size());
   for (const auto& [v, b] : band_of)
     for (const auto& [w, length] : graph.edges[v])

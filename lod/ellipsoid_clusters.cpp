@@ -44,8 +44,7 @@ std::vector<Eigen::Vector3d> KMeansPlusPlus(const std::vector<Eigen::Vector3d>& 
 
 double EllipsoidArea(const Eigen::Vector3f& radii) {  // Knud Thomsen's approximation
   const double p = 1.6075, a = radii[0], b = radii[1], c = radii[2];
-  return 4 * std::numbers::pi *
-         std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
+  return 4 * std::numbers::pi * std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
 }
 
 }  // namespace
@@ -91,19 +90,21 @@ GaussianMixture FitGaussianMixture(const std::vector<Eigen::Vector3d>& points, c
   GaussianMixture mixture;
   const std::vector<Eigen::Vector3d> centres = KMeansPlusPlus(points, weights, clusters, options.seed);
   // Start: each Gaussian as wide as the whole set shrunk to its share of the volume.
-  const Eigen::Matrix3d start = cov_all / std::pow(static_cast<double>(k), 2.0 / 3) + floor * Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d start =
+      cov_all / std::pow(static_cast<double>(k), 2.0 / 3) + floor * Eigen::Matrix3d::Identity();
   for (const Eigen::Vector3d& centre : centres) mixture.components.push_back({centre, start, 1.0 / k});
   mixture.responsibilities.assign(n, std::vector<double>(k, 0));
   std::vector<double> log_p(k);
   double previous = -std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
-    // E step, in logs: log(pi_j N(x | mu_j, Sigma_j)) from each Cholesky factor.
-    std::vector<Eigen::LLT<Eigen::Matrix3d>> factors;
+    // E step, in logs: log(pi_j N(x | mu_j, Sigma_j)) from each Cholesky factor L (the
+    // Mahalanobis distance is |L^-1 (x - mu)|).
+    std::vector<Eigen::Matrix3d> whiten(k);
     std::vector<double> log_norm(k);
     for (size_t j = 0; j < k; ++j) {
       const GaussianComponent& c = mixture.components[j];
-      factors.emplace_back(c.covariance);
-      const Eigen::Matrix3d l = factors.back().matrixL();
+      const Eigen::Matrix3d l = Eigen::LLT<Eigen::Matrix3d>(c.covariance).matrixL();
+      whiten[j] = l.inverse();
       log_norm[j] = std::log(std::max(c.weight, 1e-300)) - std::log(l(0, 0) * l(1, 1) * l(2, 2)) -
                     1.5 * std::log(2 * std::numbers::pi);
     }
@@ -111,38 +112,41 @@ GaussianMixture FitGaussianMixture(const std::vector<Eigen::Vector3d>& points, c
     for (size_t i = 0; i < n; ++i) {
       double best = -std::numeric_limits<double>::infinity();
       for (size_t j = 0; j < k; ++j) {
-        const Eigen::Vector3d y = factors[j].matrixL().solve(points[i] - mixture.components[j].mean);
-        log_p[j] = log_norm[j] - 0.5 * y.squaredNorm();
+        log_p[j] = log_norm[j] - 0.5 * (whiten[j] * (points[i] - mixture.components[j].mean)).squaredNorm();
         best = std::max(best, log_p[j]);
       }
+      std::vector<double>& r = mixture.responsibilities[i];
       double sum = 0;
-      for (size_t j = 0; j < k; ++j) sum += std::exp(log_p[j] - best);
-      for (size_t j = 0; j < k; ++j) mixture.responsibilities[i][j] = std::exp(log_p[j] - best) / sum;
+      for (size_t j = 0; j < k; ++j) sum += r[j] = std::exp(log_p[j] - best);
+      for (size_t j = 0; j < k; ++j) r[j] /= sum;
       log_likelihood += weights[i] * (best + std::log(sum));
     }
-    // M step, each point weighted by its leaf's area.
+    // M step, each point weighted by its leaf's area; points in the outer loop, as stored.
+    std::vector<double> mass(k, 0);
+    std::vector<Eigen::Vector3d> means(k, Eigen::Vector3d::Zero());
+    std::vector<Eigen::Matrix3d> covariances(k, Eigen::Matrix3d::Zero());
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < k; ++j) {
+        const double w = weights[i] * mixture.responsibilities[i][j];
+        mass[j] += w;
+        means[j] += w * points[i];
+      }
+    for (size_t j = 0; j < k; ++j)
+      if (mass[j] > 0) means[j] /= mass[j];
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < k; ++j) {
+        const Eigen::Vector3d d = points[i] - means[j];
+        covariances[j] += (weights[i] * mixture.responsibilities[i][j]) * d * d.transpose();
+      }
     for (size_t j = 0; j < k; ++j) {
       GaussianComponent& c = mixture.components[j];
-      double mass = 0;
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (size_t i = 0; i < n; ++i) {
-        const double w = weights[i] * mixture.responsibilities[i][j];
-        mass += w;
-        mean += w * points[i];
-      }
-      if (mass <= 1e-12 * total) {  // an empty component keeps its place and gets no weight
+      if (mass[j] <= 1e-12 * total) {  // an empty component keeps its place and gets no weight
         c.weight = 0;
         continue;
       }
-      mean /= mass;
-      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-      for (size_t i = 0; i < n; ++i) {
-        const Eigen::Vector3d d = points[i] - mean;
-        covariance += weights[i] * mixture.responsibilities[i][j] * d * d.transpose();
-      }
-      c.mean = mean;
-      c.covariance = covariance / mass + floor * Eigen::Matrix3d::Identity();
-      c.weight = mass / total;
+      c.mean = means[j];
+      c.covariance = covariances[j] / mass[j] + floor * Eigen::Matrix3d::Identity();
+      c.weight = mass[j] / total;
     }
     mixture.iterations = iteration + 1;
     mixture.log_likelihood = log_likelihood;
@@ -246,7 +250,7 @@ std::vector<PointPrimitive> EllipsoidSurface(const std::vector<Ellipsoid>& ellip
     for (int r = 0; r < rings; ++r)
       for (int s = 0; s < segments; ++s) {
         const PointPrimitive a = corner(s, r), b = corner(s + 1, r), c = corner(s + 1, r + 1), d = corner(s, r + 1);
-        if (r > 0) corners.insert(corners.end(), {a, d, b});           // not at the top pole
+        if (r > 0) corners.insert(corners.end(), {a, d, b});          // not at the top pole
         if (r < rings - 1) corners.insert(corners.end(), {b, d, c});  // not at the bottom pole
       }
   }

@@ -23,14 +23,14 @@
 namespace voltree {
 
 struct EllipsoidClusterOptions {
-  int max_clusters = 256;            // the finest level (fewer when there are fewer leaves)
-  int level_factor = 4;              // clusters of a level over those of the next coarser one
-  int iterations = 40;               // EM iterations at most per level
-  double tolerance = 1e-5;           // stop when the log-likelihood changes less, relatively
-  uint64_t seed = 1;                 // the k-means++ start
-  double min_pixels = 5;             // the mean ellipsoid diameter on screen a level must keep
-  double min_area_fraction = 0.01;   // ellipsoids smaller than this of the level's largest are dropped
-  int sphere_segments = 12;          // the drawn ellipsoid: a unit sphere of 12 x 6 quads, stretched
+  int max_clusters = 256;           // the finest level (fewer when there are fewer leaves)
+  int level_factor = 4;             // clusters of a level over those of the next coarser one
+  int iterations = 40;              // EM iterations at most per level
+  double tolerance = 1e-5;          // stop when the log-likelihood changes less, relatively
+  uint64_t seed = 1;                // the k-means++ start
+  double min_pixels = 5;            // the mean ellipsoid diameter on screen a level must keep
+  double min_area_fraction = 0.01;  // ellipsoids smaller than this of the level's largest are dropped
+  int sphere_segments = 12;         // the drawn ellipsoid: a unit sphere of 12 x 6 quads, stretched
 
   // Throws OptionError naming the field.
   void Check() const;

@@ -23,8 +23,8 @@ struct LineMerge {
 };
 
 struct LineHierarchy {
-  BranchSkeleton skeleton;         // the finest level
-  std::vector<LineMerge> merges;   // in order, down to one segment
+  BranchSkeleton skeleton;        // the finest level
+  std::vector<LineMerge> merges;  // in order, down to one segment
 };
 
 LineHierarchy SimplifyLines(const BranchSkeleton& skeleton);

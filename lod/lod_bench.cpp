@@ -33,8 +33,9 @@ constexpr double kTopElevationDegrees = 80;
 constexpr int kVmiSize = 256;                        // the id renders' size, as the VMI paper's
 constexpr size_t kVertexBytes = 11 * sizeof(float);  // position, normal, uv, tint as the studio uploads them
 constexpr float kClasenLinePixels = 1;               // Clasen et al.'s default line width (sec. 6)
-// The candidate scales of the ellipsoids' semi-axes for the calibration by image error.
-constexpr double kEllipsoidScales[] = {0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.15, 1.3};
+// The candidate scales of the ellipsoids' semi-axes for the calibration by image error: steps of
+// 1.2 around 1 (a solid ellipsoid with the cluster's second moments, grown by half a leaf).
+constexpr double kEllipsoidScales[] = {0.16, 0.19, 0.23, 0.28, 0.33, 0.4, 0.48, 0.58, 0.69, 0.83, 1.0, 1.2, 1.44};
 
 // The views: the held-out ring, plus `top_views` from high above at azimuths spread evenly, far
 // enough that the bounding sphere fits the frame.
@@ -370,8 +371,10 @@ class LodBench {
                  Str("EM on ", leaves_.size(), " leaves, up to ", options_.ellipsoids.max_clusters, " clusters"));
     start = std::chrono::steady_clock::now();
     ellipsoid_levels_ = BuildEllipsoidHierarchy(leaves_, LeafColours(mesh_, leaves_), options_.ellipsoids);
-    line_hierarchy_ = SimplifyLines(skeleton_);
     result.ellipsoid_seconds = SecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    line_hierarchy_ = SimplifyLines(skeleton_);
+    result.line_merge_seconds = SecondsSince(start);
     for (const EllipsoidLevel& level : ellipsoid_levels_) {
       result.ellipsoid_levels.push_back(level.clusters);
       result.ellipsoid_counts.push_back(level.ellipsoids.size());

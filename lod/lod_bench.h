@@ -98,7 +98,8 @@ struct LodBenchResult {
   double vmi_seconds = 0;             // the VMI removal sequence
   double skeleton_seconds = 0;        // the branch skeleton from the bark (both primitive methods)
   double points_seconds = 0;          // sampling the points
-  double ellipsoid_seconds = 0;       // the EM fits of every level, and the line merges
+  double ellipsoid_seconds = 0;       // the EM fits of every level and their ellipsoids
+  double line_merge_seconds = 0;      // the branch lines merged down to one
   std::vector<int> ellipsoid_levels;  // clusters asked at each level, and ellipsoids kept
   std::vector<size_t> ellipsoid_counts;
   std::vector<EllipsoidCalibration> ellipsoid_calibrations;

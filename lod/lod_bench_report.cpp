@@ -81,10 +81,9 @@ std::string LodBenchTable(const LodBenchResult& result) {
       "both passes at the supersampled resolution. PSNR inf: identical to the full mesh.\n";
   if (!result.ellipsoid_levels.empty() || result.points_seconds > 0) {
     text += Str("\nPrimitives (preprocessing): branch skeleton from the bark ", Fixed(result.skeleton_seconds, 2),
-                " s; points sampled ", Fixed(result.points_seconds, 2),
-                " s; ellipsoids (EM fits of every level) and "
-                "line merges ",
-                Fixed(result.ellipsoid_seconds, 2), " s. Ellipsoid levels (clusters asked: kept):");
+                " s; points sampled ", Fixed(result.points_seconds, 2), " s; ellipsoids (the EM fits of every level) ",
+                Fixed(result.ellipsoid_seconds, 2), " s; branch lines merged ", Fixed(result.line_merge_seconds, 2),
+                " s. Ellipsoid levels (clusters asked: kept):");
     for (size_t l = 0; l < result.ellipsoid_levels.size(); ++l)
       text += Str(l ? ", " : " ", result.ellipsoid_levels[l], ": ", result.ellipsoid_counts[l]);
     text += ".\n";
@@ -184,6 +183,7 @@ std::string LodBenchJson(const LodBenchResult& result) {
                                {"skeleton_seconds", result.skeleton_seconds},
                                {"points_seconds", result.points_seconds},
                                {"ellipsoid_seconds", result.ellipsoid_seconds},
+                               {"line_merge_seconds", result.line_merge_seconds},
                                {"ellipsoid_levels", result.ellipsoid_levels},
                                {"ellipsoid_counts", result.ellipsoid_counts},
                                {"ellipsoid_calibrations", calibrations},

@@ -150,9 +150,9 @@ void SetLight(const ShaderProgram& program, const StudioLighting& lighting, cons
 
 }  // namespace
 
-PrimitiveRenderer::PrimitiveRenderer(const std::vector<PointPrimitive>& points,
-                                     const std::vector<LinePrimitive>& lines, const Eigen::Vector3f& crown_min,
-                                     const Eigen::Vector3f& crown_max, const std::vector<PointPrimitive>& surface)
+PrimitiveRenderer::PrimitiveRenderer(const std::vector<PointPrimitive>& points, const std::vector<LinePrimitive>& lines,
+                                     const Eigen::Vector3f& crown_min, const Eigen::Vector3f& crown_max,
+                                     const std::vector<PointPrimitive>& surface)
     : point_count_(points.size()),
       line_count_(lines.size()),
       surface_count_(surface.size()),
@@ -175,8 +175,8 @@ PrimitiveRenderer::PrimitiveRenderer(const std::vector<PointPrimitive>& points,
   for (const LinePrimitive& l : lines) {
     const auto base = static_cast<uint32_t>(corners.size());
     // Seen from the far end the screen direction is reversed, and so is the side.
-    for (const auto& [self, other, side] : {std::tuple{l.a, l.b, -1.f}, std::tuple{l.a, l.b, 1.f},
-                                            std::tuple{l.b, l.a, 1.f}, std::tuple{l.b, l.a, -1.f}})
+    for (const auto& [self, other, side] :
+         {std::tuple{l.a, l.b, -1.f}, std::tuple{l.a, l.b, 1.f}, std::tuple{l.b, l.a, 1.f}, std::tuple{l.b, l.a, -1.f}})
       corners.push_back({{self.x(), self.y(), self.z()},
                          {other.x(), other.y(), other.z()},
                          {l.colour.x(), l.colour.y(), l.colour.z()},
@@ -189,11 +189,14 @@ PrimitiveRenderer::PrimitiveRenderer(const std::vector<PointPrimitive>& points,
   line_indices_ = GlBuffer(indices.data(), indices.size() * sizeof(uint32_t));
   for (const auto& [array, buffer] : {std::pair{&point_array_, &point_buffer_}, {&surface_array_, &surface_buffer_}})
     Bind(*array, *buffer, sizeof(PackedPoint),
-         {{0, 3, offsetof(PackedPoint, position)}, {1, 3, offsetof(PackedPoint, normal)},
+         {{0, 3, offsetof(PackedPoint, position)},
+          {1, 3, offsetof(PackedPoint, normal)},
           {2, 3, offsetof(PackedPoint, colour)}});
   Bind(line_array_, line_buffer_, sizeof(PackedCorner),
-       {{0, 3, offsetof(PackedCorner, self)}, {1, 3, offsetof(PackedCorner, other)},
-        {2, 3, offsetof(PackedCorner, colour)}, {3, 2, offsetof(PackedCorner, width_side)}});
+       {{0, 3, offsetof(PackedCorner, self)},
+        {1, 3, offsetof(PackedCorner, other)},
+        {2, 3, offsetof(PackedCorner, colour)},
+        {3, 2, offsetof(PackedCorner, width_side)}});
   glVertexArrayElementBuffer(line_array_.id(), line_indices_.id());
   const std::string header = std::string("#version 430 core\n") + kStudioProjectionGlsl;
   point_program_ = ShaderProgram::Graphics("lod points", header + kPointVertex, header + kShadeGlsl + kPointFragment);

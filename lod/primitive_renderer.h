@@ -1,7 +1,7 @@
 // Draws the primitives that replace polygons in the distant levels of detail: points (square
-// splats of a given size in pixels), shaded closed surfaces (ellipsoids) and lines (screen-space quads of two triangles as wide as the branch they stand
-// for, never thinner than a given width), lit with the studio's light as StudioTreeRenderer lights
-// its leaves and bark, so that their images compare with the full mesh's.
+// splats of a given size in pixels), shaded closed surfaces (ellipsoids) and lines (screen-space quads of two triangles
+// as wide as the branch they stand for, never thinner than a given width), lit with the studio's light as
+// StudioTreeRenderer lights its leaves and bark, so that their images compare with the full mesh's.
 #pragma once
 
 #include <Eigen/Core>

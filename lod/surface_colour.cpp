@@ -23,8 +23,7 @@ Eigen::Vector4f MaterialSample(const TreeMesh& mesh, int material, const Eigen::
     const float u = uv.x() - std::floor(uv.x()), v = uv.y() - std::floor(uv.y());
     const int x = std::clamp(static_cast<int>(u * static_cast<float>(texture.width)), 0, texture.width - 1);
     const int y = std::clamp(static_cast<int>(v * static_cast<float>(texture.height)), 0, texture.height - 1);
-    for (int c = 0; c < 3; ++c)
-      sample[c] = SrgbToLinear(texture.at(x, y, std::min(c, texture.channels - 1)) / 255.0f);
+    for (int c = 0; c < 3; ++c) sample[c] = SrgbToLinear(texture.at(x, y, std::min(c, texture.channels - 1)) / 255.0f);
     sample[3] = texture.channels == 4 ? texture.at(x, y, 3) / 255.0f : 1.0f;
   }
   sample.head<3>() = sample.head<3>().cwiseProduct(LinearBase(m));
