@@ -367,6 +367,8 @@ class LodBench {
     start = std::chrono::steady_clock::now();
     point_lines_ = BuildPointLineHierarchy(mesh_, leaves_, skeleton_, options_.points);
     result.points_seconds = SecondsSince(start);
+    result.sampled_points = point_lines_.points.size();
+    result.skeleton_segments = skeleton_.SegmentCount();
     progress.Say("ellipsoids",
                  Str("EM on ", leaves_.size(), " leaves, up to ", options_.ellipsoids.max_clusters, " clusters"));
     start = std::chrono::steady_clock::now();

@@ -94,10 +94,11 @@ struct LodBenchResult {
   std::vector<std::string> notes;  // e.g. which methods a mesh without leaves could not run
   std::vector<LodBenchRow> rows;
   std::vector<ScaleSearch> scale_searches;
-  double preprocess_seconds = 0;      // Neubert's scale search, all sizes
-  double vmi_seconds = 0;             // the VMI removal sequence
-  double skeleton_seconds = 0;        // the branch skeleton from the bark (both primitive methods)
-  double points_seconds = 0;          // sampling the points
+  double preprocess_seconds = 0;  // Neubert's scale search, all sizes
+  double vmi_seconds = 0;         // the VMI removal sequence
+  double skeleton_seconds = 0;    // the branch skeleton from the bark (both primitive methods)
+  double points_seconds = 0;      // sampling the points
+  size_t sampled_points = 0, skeleton_segments = 0;
   double ellipsoid_seconds = 0;       // the EM fits of every level and their ellipsoids
   double line_merge_seconds = 0;      // the branch lines merged down to one
   std::vector<int> ellipsoid_levels;  // clusters asked at each level, and ellipsoids kept

@@ -80,9 +80,10 @@ std::string LodBenchTable(const LodBenchResult& result) {
       "max(min_lambda, (size / frame)^2). GPU KiB: vertex, index and texture buffers. Draw ms: median over the views, "
       "both passes at the supersampled resolution. PSNR inf: identical to the full mesh.\n";
   if (!result.ellipsoid_levels.empty() || result.points_seconds > 0) {
-    text += Str("\nPrimitives (preprocessing): branch skeleton from the bark ", Fixed(result.skeleton_seconds, 2),
-                " s; points sampled ", Fixed(result.points_seconds, 2), " s; ellipsoids (the EM fits of every level) ",
-                Fixed(result.ellipsoid_seconds, 2), " s; branch lines merged ", Fixed(result.line_merge_seconds, 2),
+    text += Str("\nPrimitives (preprocessing): branch skeleton from the bark in ", Fixed(result.skeleton_seconds, 2),
+                " s (", result.skeleton_segments, " segments); ", result.sampled_points, " points sampled in ",
+                Fixed(result.points_seconds, 2), " s; ellipsoids (the EM fits of every level) in ",
+                Fixed(result.ellipsoid_seconds, 2), " s; branch lines merged in ", Fixed(result.line_merge_seconds, 2),
                 " s. Ellipsoid levels (clusters asked: kept):");
     for (size_t l = 0; l < result.ellipsoid_levels.size(); ++l)
       text += Str(l ? ", " : " ", result.ellipsoid_levels[l], ": ", result.ellipsoid_counts[l]);
@@ -184,6 +185,8 @@ std::string LodBenchJson(const LodBenchResult& result) {
                                {"points_seconds", result.points_seconds},
                                {"ellipsoid_seconds", result.ellipsoid_seconds},
                                {"line_merge_seconds", result.line_merge_seconds},
+                               {"sampled_points", result.sampled_points},
+                               {"skeleton_segments", result.skeleton_segments},
                                {"ellipsoid_levels", result.ellipsoid_levels},
                                {"ellipsoid_counts", result.ellipsoid_counts},
                                {"ellipsoid_calibrations", calibrations},
