@@ -1,7 +1,8 @@
-// The LOD bench: the full mesh as the reference, and each leaf-pruning method drawn at a sweep of
-// screen sizes from the studio's held-out ring and from above, measured for cost (leaves and
-// triangles drawn, GPU bytes, draw time, fragments) and for quality against the full mesh at the
-// same size (precision and recall of covered pixels, multi-scale RMS, RGB and alpha PSNR).
+// The LOD bench: the full mesh as the reference, and each leaf-pruning method (and the primitive
+// methods: points and lines, clustered ellipsoids) drawn at a sweep of screen sizes from the
+// studio's held-out ring and from above, measured for cost (leaves, triangles and primitives
+// drawn, GPU bytes, draw time, fragments) and for quality against the full mesh at the same size
+// (precision and recall of covered pixels, multi-scale RMS, RGB and alpha PSNR).
 #pragma once
 
 #include <cstdint>
