@@ -41,7 +41,7 @@ TEST(PrimitiveRows, WithoutLeavesBothMethodsDrawTheBranchLinesAndSaySo) {
     ++rows;
     EXPECT_GT(row.primitives, 0u) << row.method << " " << row.size;
     EXPECT_EQ(row.leaves, 0u);
-    EXPECT_EQ(row.level, -1);  // no ellipsoid level without leaves
+    EXPECT_EQ(row.level, -1);                                     // no ellipsoid level without leaves
     EXPECT_GT(row.recall, 0.3) << row.method << " " << row.size;  // the lines cover the bark
   }
   EXPECT_EQ(rows, 4);
