@@ -87,6 +87,7 @@ void AddLodBenchCommand(CLI::App& app) {
   AddOption(*command, "--prune-seed", args->bench.seed);
   AddOption(*command, "--top-views", args->bench.top_views);
   AddOption(*command, "--asset", args->bench.asset);
+  AddFlag(*command, "--save-views", args->bench.save_views);
   AddOption(*command, "--held-out", args->bench.studio.held_out);
   AddParsedOption<StudioOptions>(
       *command, "--size", args->bench.studio,

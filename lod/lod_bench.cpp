@@ -229,16 +229,33 @@ class LodBench {
       progress.Say("lod-bench", Str(size, " px: lambda ", lambdas_[s]));
       const std::vector<View> at = AtSize(views_, size);
       const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      LodBenchRow reference;
+      reference.method = "reference";
+      reference.size = size;
+      Keep(reference, references.front().foreground, /*straight=*/false);
       for (const std::string& method : result.methods)
         result.rows.push_back(method == "asset"        ? MeasureAsset(size, at, references)
                               : method == "points"     ? MeasurePoints(size, at, references)
                               : method == "ellipsoids" ? MeasureEllipsoids(size, at, references, result)
                                                        : MeasureMethod(method, size, lambdas_[s], at, references));
     }
+    result.saved_views = std::move(saved_views_);
     return result;
   }
 
  private:
+  // With save_views, the row's first view, in straight alpha (as PNG stores it).
+  void Keep(const LodBenchRow& row, const Image8& image, bool straight) {
+    if (!options_.save_views) return;
+    Image8 kept = image;
+    if (!straight)
+      for (size_t p = 0; p + 3 < kept.pixels.size(); p += 4)
+        if (const int alpha = kept.pixels[p + 3]; alpha > 0)
+          for (size_t c = 0; c < 3; ++c)
+            kept.pixels[p + c] = static_cast<uint8_t>(std::min(255, (kept.pixels[p + c] * 255 + alpha / 2) / alpha));
+    saved_views_.push_back({Str(row.method, "_", row.size), std::move(kept)});
+  }
+
   // Methods are drawn as a renderer would draw them at that size (the bench's supersampling);
   // the reference is the full mesh sampled as finely as in the frame, so that sub-pixel leaves
   // count with the coverage they have instead of vanishing into the alpha-tested texture's
@@ -429,6 +446,7 @@ class LodBench {
       row.triangles = 2 * prefix.lines.size();
       row.geometry_bytes = drawn.GpuBytes();
     }
+    Keep(row, frames.front().foreground, /*straight=*/false);
     FillQuality(row, Pool(frames, references));
     return row;
   }
@@ -462,6 +480,7 @@ class LodBench {
     row.primitives = ellipsoids + lines.size();
     row.triangles = surface.size() / 3 + 2 * lines.size();
     row.geometry_bytes = drawn.GpuBytes();
+    Keep(row, frames.front().foreground, /*straight=*/false);
     FillQuality(row, Pool(frames, references));
     return row;
   }
@@ -503,6 +522,7 @@ class LodBench {
     row.triangles = drawn->TriangleCount();
     row.geometry_bytes = GeometryBytes(*drawn);
     row.texture_bytes = TextureBytes(mesh_);
+    Keep(row, frames.front().foreground, /*straight=*/false);
     FillQuality(row, Pool(frames, references));
     return row;
   }
@@ -522,6 +542,7 @@ class LodBench {
       frame.draw_ms = stats.frame_ms;
       cells += stats.cells;
       AddView(pooled, frame, references[v].foreground, /*straight=*/true);
+      if (v == 0) Keep(row, frame.foreground, /*straight=*/true);
     }
     row.triangles = 2 * cells / std::max<size_t>(at.size(), 1);
     row.geometry_bytes = asset_->GpuBytes().buffers;
@@ -552,6 +573,7 @@ class LodBench {
   PointLineHierarchy point_lines_;
   std::vector<EllipsoidLevel> ellipsoid_levels_;
   LineHierarchy line_hierarchy_;
+  std::vector<SavedView> saved_views_;
 };
 
 }  // namespace

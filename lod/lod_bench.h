@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "core/progress.h"
 #include "lod/ellipsoid_clusters.h"
 #include "lod/point_line_hierarchy.h"
@@ -39,6 +40,8 @@ struct LodBenchOptions {
   // it), drawn by the asset renderer (render/tree_renderer.h, its own LOD) as the row "asset";
   // empty: none.
   std::filesystem::path asset;
+  // Keep the first view of every row and of the reference (written as views/METHOD_SIZE.png).
+  bool save_views = false;
   // The primitive methods: Deussen et al.'s points and lines, Clasen et al.'s ellipsoids.
   PointLineOptions points;
   EllipsoidClusterOptions ellipsoids;
@@ -84,6 +87,11 @@ struct EllipsoidCalibration {
   double scale = 1, ms_rms = 0;
 };
 
+struct SavedView {
+  std::string name;  // METHOD_SIZE, or reference_SIZE
+  Image8 image;      // RGBA, straight alpha
+};
+
 struct LodBenchResult {
   std::string tree;
   std::string renderer;  // the GL renderer's name
@@ -106,6 +114,7 @@ struct LodBenchResult {
   std::vector<size_t> ellipsoid_counts;
   std::vector<EllipsoidCalibration> ellipsoid_calibrations;
   double ellipsoid_calibration_seconds = 0;
+  std::vector<SavedView> saved_views;  // with save_views
 };
 
 // The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"

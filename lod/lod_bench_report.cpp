@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/image.h"
 #include "lod/stochastic_pruning.h"
 #include "pipeline/plots.h"
 
@@ -197,6 +198,10 @@ std::string LodBenchJson(const LodBenchResult& result) {
 void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& folder, Progress& progress) {
   WriteFileAtomic(folder / "table.md", LodBenchTable(result));
   WriteFileAtomic(folder / "lod_bench.json", LodBenchJson(result));
+  if (!result.saved_views.empty()) {
+    std::filesystem::create_directories(folder / "views");
+    for (const SavedView& view : result.saved_views) WriteImage(folder / "views" / (view.name + ".png"), view.image);
+  }
 
   std::string why_not;
   const auto gnuplot = FindGnuplot(folder / "gnuplot_probe.log", &why_not);

@@ -13,7 +13,7 @@
 namespace voltree {
 namespace {
 
-LodBenchResult SmallBench(const TreeMesh& mesh) {
+LodBenchResult SmallBench(const TreeMesh& mesh, bool save_views = false) {
   LodBenchOptions options;
   options.studio.width = options.studio.height = 32;
   options.studio.held_out = 2;
@@ -21,6 +21,7 @@ LodBenchResult SmallBench(const TreeMesh& mesh) {
   options.top_views = 0;
   options.preprocess_views = 1;
   options.ellipsoids.max_clusters = 16;
+  options.save_views = save_views;
   Progress quiet(true);
   return RunLodBench(mesh, "test", options, quiet);
 }
@@ -31,7 +32,7 @@ bool Mentions(const LodBenchResult& result, const std::string& text) {
 }
 
 TEST(PrimitiveRows, WithoutLeavesBothMethodsDrawTheBranchLinesAndSaySo) {
-  const LodBenchResult result = SmallBench(test::SyntheticBranches(false));
+  const LodBenchResult result = SmallBench(test::SyntheticBranches(false), /*save_views=*/true);
   EXPECT_EQ(result.methods, (std::vector<std::string>{"full", "points", "ellipsoids"}));
   EXPECT_TRUE(Mentions(result, "need leaves"));
   EXPECT_TRUE(Mentions(result, "only branch lines"));
@@ -45,6 +46,15 @@ TEST(PrimitiveRows, WithoutLeavesBothMethodsDrawTheBranchLinesAndSaySo) {
     EXPECT_GT(row.recall, 0.3) << row.method << " " << row.size;  // the lines cover the bark
   }
   EXPECT_EQ(rows, 4);
+  // --save-views: the reference and each row's first view at each size, in straight alpha.
+  std::vector<std::string> names;
+  for (const SavedView& view : result.saved_views) {
+    names.push_back(view.name);
+    EXPECT_EQ(view.image.height, view.name.ends_with("_32") ? 32 : 16) << view.name;
+    EXPECT_EQ(view.image.channels, 4);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"reference_32", "full_32", "points_32", "ellipsoids_32", "reference_16",
+                                             "full_16", "points_16", "ellipsoids_16"}));
 }
 
 TEST(PrimitiveRows, WithoutBarkBothMethodsDrawTheLeavesPrimitivesAndSaySo) {
