@@ -1,5 +1,6 @@
-// voltree lod-bench: published leaf-pruning methods measured against the full mesh over a
-// sweep of screen sizes -> table.md, lod_bench.json, plots/.
+// voltree lod-bench: published level-of-detail methods (leaf pruning, points and lines, clustered
+// ellipsoids) measured against the full mesh over a sweep of screen sizes -> table.md,
+// lod_bench.json, plots/.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -61,9 +62,10 @@ std::string JoinSizes(const std::vector<int>& sizes) {
 void AddLodBenchCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "lod-bench",
-      "Measure published leaf-pruning levels of detail (stochastic pruning unscaled and with Cook et al.'s "
-      "1/lambda scaling, Neubert et al.'s PR-optimal scaling, pruning ordered by viewpoint mutual information; "
-      "with --asset, a voltree asset of the same tree) against the full mesh over a sweep of screen sizes, from the "
+      "Measure published levels of detail (stochastic pruning unscaled and with Cook et al.'s 1/lambda scaling, "
+      "Neubert et al.'s PR-optimal scaling, pruning ordered by viewpoint mutual information, Deussen et al.'s "
+      "points and lines, Clasen et al.'s clustered ellipsoids; with --asset, a voltree asset of the same tree) "
+      "against the full mesh over a sweep of screen sizes, from the "
       "studio's held-out ring and from above. Writes table.md, lod_bench.json and plots/. "
       "Example: voltree lod-bench oak -o oak_lod");
   auto args = std::make_shared<LodBenchArguments>();
@@ -85,6 +87,7 @@ void AddLodBenchCommand(CLI::App& app) {
   AddOption(*command, "--prune-seed", args->bench.seed);
   AddOption(*command, "--top-views", args->bench.top_views);
   AddOption(*command, "--asset", args->bench.asset);
+  AddFlag(*command, "--save-views", args->bench.save_views);
   AddOption(*command, "--held-out", args->bench.studio.held_out);
   AddParsedOption<StudioOptions>(
       *command, "--size", args->bench.studio,

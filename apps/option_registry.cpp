@@ -331,6 +331,9 @@ std::vector<OptionSpec> LodBenchFlags() {
       {"--top-views",
        {"LodBenchOptions.top_views"},
        "Views from 80 degrees above the horizon, besides the held-out ring (0..16)"},
+      {"--save-views",
+       {"LodBenchOptions.save_views"},
+       "Also write the first view of every row and of the reference at each size: views/METHOD_SIZE.png"},
   };
 }
 

@@ -12,8 +12,12 @@
 #include "core/image_metrics.h"
 #include "core/vtree.h"
 #include "render/tree_renderer.h"
+#include "lod/branch_skeleton.h"
 #include "lod/leaf_separation.h"
+#include "lod/line_simplification.h"
 #include "lod/lod_view_renderer.h"
+#include "lod/primitive_renderer.h"
+#include "lod/surface_colour.h"
 #include "lod/pruned_mesh.h"
 #include "lod/screen_size_rule.h"
 #include "lod/stochastic_pruning.h"
@@ -28,6 +32,10 @@ namespace {
 constexpr double kTopElevationDegrees = 80;
 constexpr int kVmiSize = 256;                        // the id renders' size, as the VMI paper's
 constexpr size_t kVertexBytes = 11 * sizeof(float);  // position, normal, uv, tint as the studio uploads them
+constexpr float kClasenLinePixels = 1;               // Clasen et al.'s default line width (sec. 6)
+// The candidate scales of the ellipsoids' semi-axes for the calibration by image error: steps of
+// 1.2 around 1 (a solid ellipsoid with the cluster's second moments, grown by half a leaf).
+constexpr double kEllipsoidScales[] = {0.16, 0.19, 0.23, 0.28, 0.33, 0.4, 0.48, 0.58, 0.69, 0.83, 1.0, 1.2, 1.44};
 
 // The views: the held-out ring, plus `top_views` from high above at azimuths spread evenly, far
 // enough that the bounding sphere fits the frame.
@@ -126,6 +134,29 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> GrownBounds(const TreeMesh& mesh, do
   return {lo.cast<double>() - pad, hi.cast<double>() + pad};
 }
 
+// The box the studio shader darkens the crown in: that of the alpha-tested or blended vertices,
+// else of the mesh (as StudioTreeRenderer takes it), so primitives are lit as the leaves were.
+std::pair<Eigen::Vector3f, Eigen::Vector3f> CrownBounds(const TreeMesh& mesh) {
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = -lo;
+  for (const MeshGroup& group : mesh.groups)
+    if (mesh.materials[group.material].alpha_mode != AlphaMode::kOpaque)
+      for (uint32_t index : group.indices) {
+        lo = lo.cwiseMin(mesh.vertices[index].position);
+        hi = hi.cwiseMax(mesh.vertices[index].position);
+      }
+  if (!(lo.array() <= hi.array()).all()) return mesh.Bounds();
+  return {lo, hi};
+}
+
+std::vector<Ellipsoid> ScaledEllipsoids(std::vector<Ellipsoid> ellipsoids, double scale) {
+  for (Ellipsoid& ellipsoid : ellipsoids) ellipsoid.axes *= static_cast<float>(scale);
+  return ellipsoids;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 void LodBenchOptions::Check() const {
@@ -142,6 +173,8 @@ void LodBenchOptions::Check() const {
   if (!asset.empty() && !std::filesystem::is_regular_file(asset))
     FailOption("LodBenchOptions.asset", "is ", asset.string(), ", which is not a file");
   if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
+  points.Check();
+  ellipsoids.Check();
 }
 
 namespace {
@@ -162,7 +195,8 @@ class LodBench {
         rig_(MakeStudioRig(mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio)),
         views_(BenchViews(rig_, mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio,
                           options.top_views)),
-        full_(mesh) {
+        full_(mesh),
+        crown_(CrownBounds(mesh)) {
     for (int size : options.sizes) lambdas_.push_back(LambdaForScreenSize(size, frame_, options.min_lambda));
   }
 
@@ -179,12 +213,13 @@ class LodBench {
     if (leaves_.empty()) {
       result.notes.push_back(
           "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook, neubert and vmi "
-          "need leaves; only the full mesh was measured");
+          "need leaves");
     } else {
       result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
       SearchOptimalScales(result, progress);
       RankByVmi(result, progress);
     }
+    BuildPrimitives(result, progress);
     if (!options_.asset.empty()) {
       asset_ = std::make_unique<TreeRenderer>(ReadAsset(options_.asset));
       result.methods.push_back("asset");
@@ -194,14 +229,33 @@ class LodBench {
       progress.Say("lod-bench", Str(size, " px: lambda ", lambdas_[s]));
       const std::vector<View> at = AtSize(views_, size);
       const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      LodBenchRow reference;
+      reference.method = "reference";
+      reference.size = size;
+      Keep(reference, references.front().foreground, /*straight=*/false);
       for (const std::string& method : result.methods)
-        result.rows.push_back(method == "asset" ? MeasureAsset(size, at, references)
-                                                : MeasureMethod(method, size, lambdas_[s], at, references));
+        result.rows.push_back(method == "asset"        ? MeasureAsset(size, at, references)
+                              : method == "points"     ? MeasurePoints(size, at, references)
+                              : method == "ellipsoids" ? MeasureEllipsoids(size, at, references, result)
+                                                       : MeasureMethod(method, size, lambdas_[s], at, references));
     }
+    result.saved_views = std::move(saved_views_);
     return result;
   }
 
  private:
+  // With save_views, the row's first view, in straight alpha (as PNG stores it).
+  void Keep(const LodBenchRow& row, const Image8& image, bool straight) {
+    if (!options_.save_views) return;
+    Image8 kept = image;
+    if (!straight)
+      for (size_t p = 0; p + 3 < kept.pixels.size(); p += 4)
+        if (const int alpha = kept.pixels[p + 3]; alpha > 0)
+          for (size_t c = 0; c < 3; ++c)
+            kept.pixels[p + c] = static_cast<uint8_t>(std::min(255, (kept.pixels[p + c] * 255 + alpha / 2) / alpha));
+    saved_views_.push_back({Str(row.method, "_", row.size), std::move(kept)});
+  }
+
   // Methods are drawn as a renderer would draw them at that size (the bench's supersampling);
   // the reference is the full mesh sampled as finely as in the frame, so that sub-pixel leaves
   // count with the coverage they have instead of vanishing into the alpha-tested texture's
@@ -227,17 +281,12 @@ class LodBench {
   // renderer; here alpha-tested leaves lose coverage in coarse mip levels, so it is not.)
   void SearchOptimalScales(LodBenchResult& result, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<View> training;
-    const size_t step = std::max<size_t>(1, rig_.inputs.size() / options_.preprocess_views);
-    for (size_t i = 0; i < rig_.inputs.size() && training.size() < static_cast<size_t>(options_.preprocess_views);
-         i += step)
-      training.push_back(rig_.inputs[i]);
     for (size_t s = 0; s < options_.sizes.size(); ++s) {
       const int size = options_.sizes[s];
       progress.Step("neubert scales", s, options_.sizes.size());
       if (optimal_scale_.count(size)) continue;
-      const std::vector<View> at = AtSize(training, size);
-      const std::vector<LodFrame> references = RenderAll(full_, at, ReferenceSupersample(size));
+      const std::vector<View> at = AtSize(TrainingViews(), size);
+      const std::vector<LodFrame>& references = TrainingReferences(size);
       ScaleSearch search;
       search.size = size;
       search.lambda = lambdas_[s];
@@ -263,6 +312,177 @@ class LodBench {
     LeafIdRenderer ids(mesh_, leaves_);
     vmi_sequence_ = VmiRemovalSequence(ids, leaves_.size(), AtSize(rig_.inputs, kVmiSize), keep);
     result.vmi_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The preprocessing steps' views: up to `preprocess_views` of the studio's input views, spread
+  // evenly, so that no method is tuned on the views it is scored on.
+  std::vector<View> TrainingViews() const {
+    std::vector<View> training;
+    const size_t step = std::max<size_t>(1, rig_.inputs.size() / options_.preprocess_views);
+    for (size_t i = 0; i < rig_.inputs.size() && training.size() < static_cast<size_t>(options_.preprocess_views);
+         i += step)
+      training.push_back(rig_.inputs[i]);
+    return training;
+  }
+
+  // The full mesh at the training views at `size`, rendered once for every step that needs it.
+  const std::vector<LodFrame>& TrainingReferences(int size) {
+    auto it = training_references_.find(size);
+    if (it == training_references_.end())
+      it = training_references_
+               .emplace(size, RenderAll(full_, AtSize(TrainingViews(), size), ReferenceSupersample(size)))
+               .first;
+    return it->second;
+  }
+
+  // Clasen et al. calibrate the ellipsoids' size by image error: the scale of the semi-axes with
+  // the least multi-scale RMS against the full mesh on the training views, here at each size for
+  // the level that size draws.
+  double CalibrateEllipsoids(int size, const EllipsoidLevel& level, const std::vector<LinePrimitive>& lines,
+                             LodBenchResult& result) {
+    const auto key = std::make_pair(size, level.clusters);
+    if (const auto it = ellipsoid_scale_.find(key); it != ellipsoid_scale_.end()) return it->second;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<View> at = AtSize(TrainingViews(), size);
+    const std::vector<LodFrame>& references = TrainingReferences(size);
+    EllipsoidCalibration calibration;
+    calibration.size = size;
+    calibration.clusters = level.clusters;
+    calibration.ms_rms = std::numeric_limits<double>::infinity();
+    PrimitiveDrawOptions draw;
+    draw.min_line_pixels = kClasenLinePixels;
+    for (double scale : kEllipsoidScales) {
+      const PrimitiveRenderer drawn(
+          {}, lines, crown_.first, crown_.second,
+          EllipsoidSurface(ScaledEllipsoids(level.ellipsoids, scale), options_.ellipsoids.sphere_segments));
+      const Pooled pooled = Pool(RenderPrimitives(drawn, draw, at), references);
+      const double ms_rms = pooled.multiscale_rms / std::max(pooled.views, 1);
+      calibration.trials.emplace_back(scale, ms_rms);
+      if (ms_rms < calibration.ms_rms) calibration.ms_rms = ms_rms, calibration.scale = scale;
+    }
+    result.ellipsoid_calibrations.push_back(calibration);
+    result.ellipsoid_calibration_seconds += SecondsSince(start);
+    return ellipsoid_scale_[key] = calibration.scale;
+  }
+
+  // The primitive methods' preprocessing: the branch skeleton, the points, the EM fits and the
+  // line merges. Each builds what the mesh has of leaves and bark and says what it cannot.
+  void BuildPrimitives(LodBenchResult& result, Progress& progress) {
+    auto start = std::chrono::steady_clock::now();
+    skeleton_ = ExtractBranchSkeleton(mesh_);
+    result.skeleton_seconds = SecondsSince(start);
+    if (leaves_.empty() && skeleton_.SegmentCount() == 0) {
+      result.notes.push_back(
+          "the mesh has no leaves and too little bark for a branch line: points and ellipsoids were not measured");
+      return;
+    }
+    if (leaves_.empty())
+      result.notes.push_back("points and ellipsoids: no leaves, so no points and no ellipsoids; only branch lines");
+    if (skeleton_.SegmentCount() == 0)
+      result.notes.push_back("points and ellipsoids: no bark to make branch lines of; only the leaves' primitives");
+    progress.Say("points", Str("sampling ", leaves_.size(), " leaves; ", skeleton_.SegmentCount(), " branch segments"));
+    start = std::chrono::steady_clock::now();
+    point_lines_ = BuildPointLineHierarchy(mesh_, leaves_, skeleton_, options_.points);
+    result.points_seconds = SecondsSince(start);
+    result.sampled_points = point_lines_.points.size();
+    result.skeleton_segments = skeleton_.SegmentCount();
+    progress.Say("ellipsoids",
+                 Str("EM on ", leaves_.size(), " leaves, up to ", options_.ellipsoids.max_clusters, " clusters"));
+    start = std::chrono::steady_clock::now();
+    ellipsoid_levels_ = BuildEllipsoidHierarchy(leaves_, LeafColours(mesh_, leaves_), options_.ellipsoids);
+    result.ellipsoid_seconds = SecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    line_hierarchy_ = SimplifyLines(skeleton_);
+    result.line_merge_seconds = SecondsSince(start);
+    for (const EllipsoidLevel& level : ellipsoid_levels_) {
+      result.ellipsoid_levels.push_back(level.clusters);
+      result.ellipsoid_counts.push_back(level.ellipsoids.size());
+    }
+    result.methods.insert(result.methods.end(), {"points", "ellipsoids"});
+  }
+
+  // Pixels per mesh unit at the tree's distance, the views' mean: what sizes a primitive.
+  double PixelsPerUnit(const std::vector<View>& at) const {
+    double sum = 0;
+    for (const View& view : at) sum += view.camera.FocalY() / std::max((view.pose.Center() - rig_.target).norm(), 1e-9);
+    return sum / static_cast<double>(std::max<size_t>(at.size(), 1));
+  }
+
+  std::vector<LodFrame> RenderPrimitives(const PrimitiveRenderer& drawn, const PrimitiveDrawOptions& draw,
+                                         const std::vector<View>& at) {
+    std::vector<LodFrame> frames;
+    for (const View& view : at)
+      frames.push_back(renderer_.Render([&](const View& v, const StudioLighting& lighting, double near,
+                                            double far) { drawn.Draw(v, lighting, near, far, draw); },
+                                        view, supersample_));
+    return frames;
+  }
+
+  // Deussen et al.: the prefix of points and lines the size asks for, or the mesh when it asks
+  // for more points than were sampled.
+  LodBenchRow MeasurePoints(int size, const std::vector<View>& at, const std::vector<LodFrame>& references) {
+    LodBenchRow row;
+    row.method = "points";
+    row.size = size;
+    const PointLineLevel level = PointLineLevelFor(point_lines_, PixelsPerUnit(at), options_.points);
+    std::vector<LodFrame> frames;
+    if (level.polygons) {
+      row.leaves = leaves_.size();
+      row.triangles = mesh_.TriangleCount();
+      row.geometry_bytes = GeometryBytes(mesh_);
+      row.texture_bytes = TextureBytes(mesh_);
+      frames = ReferenceSupersample(size) == supersample_ ? references : RenderAll(full_, at, supersample_);
+    } else {
+      const PointLineHierarchy prefix = PointLinePrefix(point_lines_, level.points, level.lines);
+      const PrimitiveRenderer drawn(prefix.points, prefix.lines, crown_.first, crown_.second);
+      PrimitiveDrawOptions draw;
+      draw.point_pixels = level.point_pixels;
+      draw.min_line_pixels = static_cast<float>(options_.points.min_line_pixels);
+      frames = RenderPrimitives(drawn, draw, at);
+      row.leaves = 0;
+      row.lambda = static_cast<double>(prefix.points.size()) /
+                   static_cast<double>(std::max<size_t>(point_lines_.points.size(), 1));
+      row.primitives = prefix.points.size() + prefix.lines.size();
+      row.triangles = 2 * prefix.lines.size();
+      row.geometry_bytes = drawn.GpuBytes();
+    }
+    Keep(row, frames.front().foreground, /*straight=*/false);
+    FillQuality(row, Pool(frames, references));
+    return row;
+  }
+
+  // Clasen et al.: the level of ellipsoids whose mean diameter stays above min_pixels, and the
+  // branch lines merged while a merge moves them less than a pixel.
+  LodBenchRow MeasureEllipsoids(int size, const std::vector<View>& at, const std::vector<LodFrame>& references,
+                                LodBenchResult& result) {
+    LodBenchRow row;
+    row.method = "ellipsoids";
+    row.size = size;
+    row.leaves = 0;
+    const double pixels_per_unit = PixelsPerUnit(at);
+    const std::vector<LinePrimitive> lines =
+        SkeletonLines(LinesAfter(line_hierarchy_, MergesWithin(line_hierarchy_, 1 / pixels_per_unit)));
+    std::vector<PointPrimitive> surface;
+    size_t ellipsoids = 0;
+    if (!ellipsoid_levels_.empty()) {
+      const EllipsoidLevel& level =
+          ellipsoid_levels_[EllipsoidLevelFor(ellipsoid_levels_, pixels_per_unit, options_.ellipsoids.min_pixels)];
+      row.level = level.clusters;
+      row.area_scale = CalibrateEllipsoids(size, level, lines, result);
+      ellipsoids = level.ellipsoids.size();
+      surface =
+          EllipsoidSurface(ScaledEllipsoids(level.ellipsoids, row.area_scale), options_.ellipsoids.sphere_segments);
+    }
+    const PrimitiveRenderer drawn({}, lines, crown_.first, crown_.second, surface);
+    PrimitiveDrawOptions draw;
+    draw.min_line_pixels = kClasenLinePixels;
+    const std::vector<LodFrame> frames = RenderPrimitives(drawn, draw, at);
+    row.primitives = ellipsoids + lines.size();
+    row.triangles = surface.size() / 3 + 2 * lines.size();
+    row.geometry_bytes = drawn.GpuBytes();
+    Keep(row, frames.front().foreground, /*straight=*/false);
+    FillQuality(row, Pool(frames, references));
+    return row;
   }
 
   // The leaves a pruning method draws at `lambda`, and the area scale the row reports.
@@ -302,6 +522,7 @@ class LodBench {
     row.triangles = drawn->TriangleCount();
     row.geometry_bytes = GeometryBytes(*drawn);
     row.texture_bytes = TextureBytes(mesh_);
+    Keep(row, frames.front().foreground, /*straight=*/false);
     FillQuality(row, Pool(frames, references));
     return row;
   }
@@ -321,6 +542,7 @@ class LodBench {
       frame.draw_ms = stats.frame_ms;
       cells += stats.cells;
       AddView(pooled, frame, references[v].foreground, /*straight=*/true);
+      if (v == 0) Keep(row, frame.foreground, /*straight=*/true);
     }
     row.triangles = 2 * cells / std::max<size_t>(at.size(), 1);
     row.geometry_bytes = asset_->GpuBytes().buffers;
@@ -341,9 +563,17 @@ class LodBench {
   const StudioRig rig_;
   const std::vector<View> views_;
   const StudioTreeRenderer full_;
-  std::map<int, double> optimal_scale_;  // by size
+  std::map<int, double> optimal_scale_;                       // by size
+  std::map<int, std::vector<LodFrame>> training_references_;  // by size
+  std::map<std::pair<int, int>, double> ellipsoid_scale_;     // by size and clusters
   std::vector<VmiRemoval> vmi_sequence_;
   std::unique_ptr<TreeRenderer> asset_;
+  const std::pair<Eigen::Vector3f, Eigen::Vector3f> crown_;
+  BranchSkeleton skeleton_;
+  PointLineHierarchy point_lines_;
+  std::vector<EllipsoidLevel> ellipsoid_levels_;
+  LineHierarchy line_hierarchy_;
+  std::vector<SavedView> saved_views_;
 };
 
 }  // namespace

@@ -1,7 +1,8 @@
-// The LOD bench: the full mesh as the reference, and each leaf-pruning method drawn at a sweep of
-// screen sizes from the studio's held-out ring and from above, measured for cost (leaves and
-// triangles drawn, GPU bytes, draw time, fragments) and for quality against the full mesh at the
-// same size (precision and recall of covered pixels, multi-scale RMS, RGB and alpha PSNR).
+// The LOD bench: the full mesh as the reference, and each leaf-pruning method (and the primitive
+// methods: points and lines, clustered ellipsoids) drawn at a sweep of screen sizes from the
+// studio's held-out ring and from above, measured for cost (leaves, triangles and primitives
+// drawn, GPU bytes, draw time, fragments) and for quality against the full mesh at the same size
+// (precision and recall of covered pixels, multi-scale RMS, RGB and alpha PSNR).
 #pragma once
 
 #include <cstdint>
@@ -9,7 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "core/progress.h"
+#include "lod/ellipsoid_clusters.h"
+#include "lod/point_line_hierarchy.h"
 #include "lod/pr_optimal_scale.h"
 #include "samples/studio_options.h"
 #include "samples/tree_mesh.h"
@@ -36,6 +40,11 @@ struct LodBenchOptions {
   // it), drawn by the asset renderer (render/tree_renderer.h, its own LOD) as the row "asset";
   // empty: none.
   std::filesystem::path asset;
+  // Keep the first view of every row and of the reference (written as views/METHOD_SIZE.png).
+  bool save_views = false;
+  // The primitive methods: Deussen et al.'s points and lines, Clasen et al.'s ellipsoids.
+  PointLineOptions points;
+  EllipsoidClusterOptions ellipsoids;
 
   // Throws OptionError naming the field (sizes outside [8, frame height], min_lambda outside (0, 1]).
   void Check() const;
@@ -45,10 +54,12 @@ struct LodBenchOptions {
 struct LodBenchRow {
   std::string method;
   int size = 0;
-  double lambda = 1;      // fraction of leaves drawn
-  double area_scale = 1;  // of each drawn leaf (vmi: their mean)
-  size_t leaves = 0;
-  size_t triangles = 0;
+  double lambda = 1;          // fraction of leaves drawn
+  double area_scale = 1;      // of each drawn leaf (vmi: their mean)
+  size_t leaves = 0;          // drawn as polygons
+  size_t triangles = 0;       // points and ellipsoids: lines are 2 each, ellipsoids their sphere's
+  size_t primitives = 0;      // points, lines and ellipsoids drawn
+  int level = -1;             // ellipsoids: the clustering drawn (its number of clusters asked of EM)
   size_t geometry_bytes = 0;  // vertex and index buffers
   size_t texture_bytes = 0;
   double draw_ms = 0;      // median over the views
@@ -67,6 +78,20 @@ struct ScaleSearch {
   ScaleTrial best;
 };
 
+// Clasen's calibration of the ellipsoids' size at one size: every candidate scale of the
+// semi-axes with its multi-scale RMS on the training views, and the chosen one.
+struct EllipsoidCalibration {
+  int size = 0;
+  int clusters = 0;
+  std::vector<std::pair<double, double>> trials;  // scale, multi-scale RMS
+  double scale = 1, ms_rms = 0;
+};
+
+struct SavedView {
+  std::string name;  // METHOD_SIZE, or reference_SIZE
+  Image8 image;      // RGBA, straight alpha
+};
+
 struct LodBenchResult {
   std::string tree;
   std::string renderer;  // the GL renderer's name
@@ -80,6 +105,16 @@ struct LodBenchResult {
   std::vector<ScaleSearch> scale_searches;
   double preprocess_seconds = 0;  // Neubert's scale search, all sizes
   double vmi_seconds = 0;         // the VMI removal sequence
+  double skeleton_seconds = 0;    // the branch skeleton from the bark (both primitive methods)
+  double points_seconds = 0;      // sampling the points
+  size_t sampled_points = 0, skeleton_segments = 0;
+  double ellipsoid_seconds = 0;       // the EM fits of every level and their ellipsoids
+  double line_merge_seconds = 0;      // the branch lines merged down to one
+  std::vector<int> ellipsoid_levels;  // clusters asked at each level, and ellipsoids kept
+  std::vector<size_t> ellipsoid_counts;
+  std::vector<EllipsoidCalibration> ellipsoid_calibrations;
+  double ellipsoid_calibration_seconds = 0;
+  std::vector<SavedView> saved_views;  // with save_views
 };
 
 // The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"
@@ -87,6 +122,9 @@ struct LodBenchResult {
 // in the VMI order, each removal growing its nearest leaf; area_scale is the mean). Needs a GL
 // context of its own. With options.asset, also "asset": triangles are 2 per cell drawn, GPU bytes
 // its buffers and DXT5 atlas, draw time the renderer's frame time, fragments not measured.
+// "points" (Deussen et al. 2002: a prefix of points and lines, or the mesh where more points are
+// needed than sampled) and "ellipsoids" (Clasen et al.: a level of leaf-cluster ellipsoids and of
+// simplified branch lines) run on whichever of leaves and bark the mesh has.
 LodBenchResult RunLodBench(const TreeMesh& mesh, const std::string& tree_name, const LodBenchOptions& options,
                            Progress& progress);
 

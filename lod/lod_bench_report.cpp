@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/image.h"
 #include "lod/stochastic_pruning.h"
 #include "pipeline/plots.h"
 
@@ -24,6 +25,9 @@ std::string Fixed(double value, int digits) {
 // JSON has no infinity: identical images' PSNR is written as null.
 nlohmann::json Number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); }
 
+// Methods that draw no pruned leaves have no lambda or leaf scale.
+bool Leafless(const std::string& method) { return method == "asset" || method == "points" || method == "ellipsoids"; }
+
 }  // namespace
 
 std::string LodBenchTable(const LodBenchResult& result) {
@@ -32,19 +36,26 @@ std::string LodBenchTable(const LodBenchResult& result) {
       result.views, " views per size (the studio's held-out ring and top views); renderer: ", result.renderer, "\n\n");
   for (const std::string& note : result.notes) text += "Note: " + note + "\n\n";
   text +=
-      "| method | size px | lambda | area scale | leaves | triangles | GPU KiB | draw ms | fragments | precision | "
-      "recall | PR score | MS-RMS | RGB PSNR | alpha PSNR |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "| method | size px | lambda | area scale | leaves | triangles | primitives | GPU KiB | draw ms | fragments | "
+      "precision | recall | PR score | MS-RMS | RGB PSNR | alpha PSNR |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const LodBenchRow& row : result.rows) {
     const std::string fragments = row.fragments < 0 ? "not available" : std::to_string(row.fragments);
-    // The asset has cells and billboards, not leaves: no lambda, scale or leaf count.
-    const bool asset = row.method == "asset";
-    text += Str("| ", row.method, " | ", row.size, " | ", asset ? "-" : Fixed(row.lambda, 4), " | ",
-                asset ? "-" : Fixed(row.area_scale, 2), " | ", asset ? "-" : std::to_string(row.leaves), " | ",
-                row.triangles, " | ", Fixed((row.geometry_bytes + row.texture_bytes) / 1024.0, 0), " | ",
-                Fixed(row.draw_ms, 2), " | ", fragments, " | ", Fixed(row.precision, 4), " | ", Fixed(row.recall, 4),
-                " | ", Fixed(row.pr_score, 4), " | ", Fixed(row.multiscale_rms, 4), " | ", Fixed(row.rgb_psnr, 2),
-                " | ", Fixed(row.alpha_psnr, 2), " |\n");
+    // The asset has cells and billboards, not leaves: no lambda, scale or leaf count; points and
+    // ellipsoids draw leaves only where they fall back to the mesh.
+    const bool asset = row.method == "asset", leafless = Leafless(row.method);
+    // Points: lambda is the drawn share of the sampled points; ellipsoids: k, the clusters of the
+    // level drawn, and the calibrated scale of their semi-axes.
+    const std::string lambda = row.method == "ellipsoids" ? Str("k ", row.level)
+                               : asset                    ? std::string("-")
+                                                          : Fixed(row.lambda, 4);
+    const std::string scale = row.method == "ellipsoids" || !leafless ? Fixed(row.area_scale, 2) : "-";
+    text +=
+        Str("| ", row.method, " | ", row.size, " | ", lambda, " | ", scale, " | ",
+            asset ? "-" : std::to_string(row.leaves), " | ", row.triangles, " | ", row.primitives, " | ",
+            Fixed((row.geometry_bytes + row.texture_bytes) / 1024.0, 0), " | ", Fixed(row.draw_ms, 2), " | ", fragments,
+            " | ", Fixed(row.precision, 4), " | ", Fixed(row.recall, 4), " | ", Fixed(row.pr_score, 4), " | ",
+            Fixed(row.multiscale_rms, 4), " | ", Fixed(row.rgb_psnr, 2), " | ", Fixed(row.alpha_psnr, 2), " |\n");
   }
   if (!result.scale_searches.empty()) {
     text += Str("\n## Neubert's PR-optimal scale (preprocessing on the input views, ",
@@ -69,6 +80,41 @@ std::string LodBenchTable(const LodBenchResult& result) {
       "\nSizes: the tree framed as in the studio's photos, in an image that many pixels tall. lambda = "
       "max(min_lambda, (size / frame)^2). GPU KiB: vertex, index and texture buffers. Draw ms: median over the views, "
       "both passes at the supersampled resolution. PSNR inf: identical to the full mesh.\n";
+  if (!result.ellipsoid_levels.empty() || result.points_seconds > 0) {
+    text += Str("\nPrimitives (preprocessing): branch skeleton from the bark in ", Fixed(result.skeleton_seconds, 2),
+                " s (", result.skeleton_segments, " segments); ", result.sampled_points, " points sampled in ",
+                Fixed(result.points_seconds, 2), " s; ellipsoids (the EM fits of every level) in ",
+                Fixed(result.ellipsoid_seconds, 2), " s; branch lines merged in ", Fixed(result.line_merge_seconds, 2),
+                " s. Ellipsoid levels (clusters asked: kept):");
+    for (size_t l = 0; l < result.ellipsoid_levels.size(); ++l)
+      text += Str(l ? ", " : " ", result.ellipsoid_levels[l], ": ", result.ellipsoid_counts[l]);
+    text += ".\n";
+  }
+  if (!result.ellipsoid_calibrations.empty()) {
+    text += Str("\n## Ellipsoid size calibrated by image error (Clasen et al.; input views, ",
+                Fixed(result.ellipsoid_calibration_seconds, 1), " s)\n\n",
+                "| size px | clusters | MS-RMS at scale 1 | scale | MS-RMS at scale |\n|---:|---:|---:|---:|---:|\n");
+    for (const EllipsoidCalibration& calibration : result.ellipsoid_calibrations) {
+      double unscaled = 0;
+      for (const auto& [scale, ms_rms] : calibration.trials)
+        if (scale == 1.0) unscaled = ms_rms;
+      text += Str("| ", calibration.size, " | ", calibration.clusters, " | ", Fixed(unscaled, 4), " | ",
+                  Fixed(calibration.scale, 2), " | ", Fixed(calibration.ms_rms, 4), " |\n");
+    }
+  }
+  const auto has = [&result](const char* method) {
+    return std::find(result.methods.begin(), result.methods.end(), method) != result.methods.end();
+  };
+  if (has("points"))
+    text +=
+        "points: Deussen et al. 2002, a prefix of the points and lines (primitives; lambda: the share of the "
+        "sampled points drawn; lines drawn as 2 triangles each), or the mesh itself (leaves, triangles) where the "
+        "size asks for more points than were sampled.\n";
+  if (has("ellipsoids"))
+    text +=
+        "ellipsoids: Clasen et al., the level of k EM clusters (lambda column) with its semi-axes scaled as "
+        "calibrated (area scale column); primitives are ellipsoids and lines; triangles those of the drawn "
+        "ellipsoids plus 2 per line.\n";
   if (std::find(result.methods.begin(), result.methods.end(), "asset") != result.methods.end())
     text +=
         "asset: the .vtree drawn by the asset renderer with its own LOD, one sample per pixel; triangles: 2 per cell "
@@ -80,14 +126,18 @@ std::string LodBenchTable(const LodBenchResult& result) {
 std::string LodBenchJson(const LodBenchResult& result) {
   nlohmann::json rows = nlohmann::json::array();
   for (const LodBenchRow& row : result.rows) {
+    // Points have a lambda (the drawn share of their samples), ellipsoids a scale (of the semi-axes),
+    // the asset neither.
     const bool asset = row.method == "asset";
-    const auto leafy = [asset](const nlohmann::json& value) { return asset ? nlohmann::json(nullptr) : value; };
+    const auto unless = [](bool none, const nlohmann::json& value) { return none ? nlohmann::json(nullptr) : value; };
     rows.push_back({{"method", row.method},
                     {"size", row.size},
-                    {"lambda", leafy(row.lambda)},
-                    {"area_scale", leafy(row.area_scale)},
-                    {"leaves", leafy(row.leaves)},
+                    {"lambda", unless(asset || row.method == "ellipsoids", row.lambda)},
+                    {"area_scale", unless(asset || row.method == "points", row.area_scale)},
+                    {"leaves", unless(asset, row.leaves)},
                     {"triangles", row.triangles},
+                    {"primitives", row.primitives},
+                    {"level", row.level < 0 ? nlohmann::json(nullptr) : nlohmann::json(row.level)},
                     {"geometry_bytes", row.geometry_bytes},
                     {"texture_bytes", row.texture_bytes},
                     {"draw_ms", row.draw_ms},
@@ -109,6 +159,16 @@ std::string LodBenchJson(const LodBenchResult& result) {
                         {"best_area_scale", search.best.area_scale},
                         {"trials", trials}});
   }
+  nlohmann::json calibrations = nlohmann::json::array();
+  for (const EllipsoidCalibration& calibration : result.ellipsoid_calibrations) {
+    nlohmann::json trials = nlohmann::json::array();
+    for (const auto& [scale, ms_rms] : calibration.trials)
+      trials.push_back({{"scale", scale}, {"multiscale_rms", ms_rms}});
+    calibrations.push_back({{"size", calibration.size},
+                            {"clusters", calibration.clusters},
+                            {"scale", calibration.scale},
+                            {"trials", trials}});
+  }
   const nlohmann::json json = {{"tree", result.tree},
                                {"renderer", result.renderer},
                                {"leaves", result.leaf_count},
@@ -121,13 +181,27 @@ std::string LodBenchJson(const LodBenchResult& result) {
                                {"rows", rows},
                                {"scale_searches", searches},
                                {"preprocess_seconds", result.preprocess_seconds},
-                               {"vmi_seconds", result.vmi_seconds}};
+                               {"vmi_seconds", result.vmi_seconds},
+                               {"skeleton_seconds", result.skeleton_seconds},
+                               {"points_seconds", result.points_seconds},
+                               {"ellipsoid_seconds", result.ellipsoid_seconds},
+                               {"line_merge_seconds", result.line_merge_seconds},
+                               {"sampled_points", result.sampled_points},
+                               {"skeleton_segments", result.skeleton_segments},
+                               {"ellipsoid_levels", result.ellipsoid_levels},
+                               {"ellipsoid_counts", result.ellipsoid_counts},
+                               {"ellipsoid_calibrations", calibrations},
+                               {"ellipsoid_calibration_seconds", result.ellipsoid_calibration_seconds}};
   return json.dump(2) + "\n";
 }
 
 void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& folder, Progress& progress) {
   WriteFileAtomic(folder / "table.md", LodBenchTable(result));
   WriteFileAtomic(folder / "lod_bench.json", LodBenchJson(result));
+  if (!result.saved_views.empty()) {
+    std::filesystem::create_directories(folder / "views");
+    for (const SavedView& view : result.saved_views) WriteImage(folder / "views" / (view.name + ".png"), view.image);
+  }
 
   std::string why_not;
   const auto gnuplot = FindGnuplot(folder / "gnuplot_probe.log", &why_not);

@@ -30,6 +30,12 @@ LodViewRenderer::LodViewRenderer(const StudioOptions& studio, const Eigen::Vecto
 }
 
 LodFrame LodViewRenderer::Render(const StudioTreeRenderer& tree, const View& view, int supersample) {
+  return Render([&tree](const View& at, const StudioLighting& lighting, double near,
+                        double far) { tree.Draw(at, lighting, near, far); },
+                view, supersample);
+}
+
+LodFrame LodViewRenderer::Render(const DrawCall& draw, const View& view, int supersample) {
   const int width = view.camera.width * supersample, height = view.camera.height * supersample;
   if (!target_ || target_->width() != width || target_->height() != height)
     target_ = std::make_unique<Framebuffer>(width, height, ColorFormat::kRGBA16F, true);
@@ -45,7 +51,7 @@ LodFrame LodViewRenderer::Render(const StudioTreeRenderer& tree, const View& vie
   }
   glFinish();
   const auto start = std::chrono::steady_clock::now();
-  tree.Draw(view, lighting_, near, far);
+  draw(view, lighting_, near, far);
   glFinish();
   frame.draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (counts_fragments_) {

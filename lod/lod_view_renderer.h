@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "core/camera.h"
@@ -33,6 +34,11 @@ class LodViewRenderer {
   // `tree` must have been made while this renderer's context was current (after its construction).
   // `supersample`: samples per pixel and axis, box-filtered.
   LodFrame Render(const StudioTreeRenderer& tree, const View& view, int supersample);
+
+  // Any drawing with the same target, light, depth range and measurement: `draw` is called once
+  // with the target bound and cleared (points and lines, ellipsoids).
+  using DrawCall = std::function<void(const View& view, const StudioLighting& lighting, double near, double far)>;
+  LodFrame Render(const DrawCall& draw, const View& view, int supersample);
 
   bool counts_fragments() const { return counts_fragments_; }
   const GlContext& context() const { return context_; }

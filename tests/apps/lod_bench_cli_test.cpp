@@ -66,7 +66,11 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
     seen.emplace(row["method"], row["size"]);
     const std::string line = Str("| ", row["method"].get<std::string>(), " | ", row["size"].get<int>(), " |");
     EXPECT_NE(table.find(line), std::string::npos) << line;
-    if (row["size"] == 48) {  // lambda 1: every method draws the full mesh
+    const bool primitives = row["method"] == "points" || row["method"] == "ellipsoids";
+    if (primitives) {  // points and lines, or ellipsoids and lines: something drawn, compared
+      EXPECT_GT(row["primitives"].get<int>() + row["triangles"].get<int>(), 0) << row;
+      EXPECT_GT(row["recall"].get<double>(), 0.0) << row;
+    } else if (row["size"] == 48) {  // lambda 1: every pruning method draws the full mesh
       EXPECT_EQ(row["precision"], 1.0) << row;
       EXPECT_EQ(row["recall"], 1.0) << row;
       EXPECT_EQ(row["leaves"], 60) << row;
@@ -74,9 +78,9 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
       EXPECT_LT(row["lambda"].get<double>(), 1.0) << row;
     }
   }
-  for (const char* method : {"full", "pruned", "cook", "neubert", "vmi"})
+  for (const char* method : {"full", "pruned", "cook", "neubert", "vmi", "points", "ellipsoids"})
     for (int size : {48, 24, 12}) EXPECT_TRUE(seen.count({method, size})) << method << " " << size;
-  EXPECT_EQ(seen.size(), 15u);
+  EXPECT_EQ(seen.size(), 21u);
 
   // The same inputs and seeds: the same numbers (draw times and fragment counts aside).
   ASSERT_EQ(Run("--sizes 48,24,12 -o again").status, 0);
@@ -84,7 +88,9 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
   nlohmann::json first = json;
   for (nlohmann::json* j : {&first, &again}) {
     (*j).erase("preprocess_seconds");
-    (*j).erase("vmi_seconds");
+    for (const char* seconds : {"vmi_seconds", "skeleton_seconds", "points_seconds", "ellipsoid_seconds",
+                                "line_merge_seconds", "ellipsoid_calibration_seconds"})
+      (*j).erase(seconds);
     for (auto& row : (*j)["rows"]) {  // measured costs, not promised to repeat on every driver
       row.erase("draw_ms");
       row.erase("fragments");
@@ -119,7 +125,8 @@ TEST_F(LodBenchCli, AnAssetGetsARowAtEverySize) {
   EXPECT_NE(missing.output.find("--asset"), std::string::npos) << missing.output;
 }
 
-// A mesh without a leaf material: only the full mesh is measured, and the table says why.
+// A mesh without a leaf material: the pruning methods are not measured, and the table says why;
+// the primitive methods draw the bark's lines, or say that there is too little bark for them.
 TEST_F(LodBenchCli, AMeshWithoutLeavesGetsTheFullRowsAndANote) {
   WriteFileAtomic(dir_ / "trunk.obj", "v -0.05 0 0\nv 0.05 0 0\nv 0.05 0 1\nv -0.05 0 1\nf 1 2 3\nf 1 3 4\n");
   const test::Outcome outcome = test::VoltreeCaptured(
@@ -129,7 +136,9 @@ TEST_F(LodBenchCli, AMeshWithoutLeavesGetsTheFullRowsAndANote) {
   const nlohmann::json json = nlohmann::json::parse(ReadFile(dir_ / "out" / "lod_bench.json"));
   EXPECT_EQ(json["methods"], nlohmann::json::array({"full"}));
   EXPECT_EQ(json["rows"].size(), 2u);
-  EXPECT_NE(ReadFile(dir_ / "out" / "table.md").find("need leaves"), std::string::npos);
+  const std::string table = ReadFile(dir_ / "out" / "table.md");
+  EXPECT_NE(table.find("need leaves"), std::string::npos);
+  EXPECT_NE(table.find("points and ellipsoids were not measured"), std::string::npos) << table;
 }
 
 TEST_F(LodBenchCli, BadFlagsAreNamed) {
