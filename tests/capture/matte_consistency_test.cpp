@@ -71,8 +71,7 @@ TEST(MatteConsistency, OneTreeIsOnePart) {
 }
 
 TEST(MatteConsistency, TwoTreesInTheRingAreNamed) {
-  const RingSet set =
-      PhotographRing({{{-1.6, -0.2, 0}, {-1.2, 0.2, 2}}, {{1.2, -0.2, 0}, {1.6, 0.2, 1.6}}});
+  const RingSet set = PhotographRing({{{-1.6, -0.2, 0}, {-1.2, 0.2, 2}}, {{1.2, -0.2, 0}, {1.6, 0.2, 1.6}}});
   const MatteConsistency consistency = MeasureMatteConsistency(set.views, set.mattes, MatteConsistencyOptions{});
   ASSERT_GE(consistency.parts.size(), 2u);
   std::printf("two boxes: parts of %zu and %zu voxels, around x = %.2f and %.2f\n", consistency.parts[0].voxels,
