@@ -68,7 +68,9 @@ TEST(PrimitiveRows, WithoutBarkBothMethodsDrawTheLeavesPrimitivesAndSaySo) {
       EXPECT_GT(row.primitives, 0u);
       EXPECT_GT(row.recall, 0.0) << row.size;
     }
-    if (row.method == "points" && row.size == 16) EXPECT_GT(row.primitives, 0u);  // points, no lines
+    if (row.method == "points" && row.size == 16) {
+      EXPECT_GT(row.primitives, 0u);  // points, no lines
+    }
   }
   EXPECT_FALSE(result.ellipsoid_levels.empty());
   EXPECT_EQ(result.skeleton_segments, 0u);
