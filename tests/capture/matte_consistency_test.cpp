@@ -83,6 +83,7 @@ TEST(MatteConsistency, TwoTreesInTheRingAreNamed) {
     FAIL() << "two boxes passed the check";
   } catch (const Error& error) {
     const std::string message = error.what();
+    std::printf("%s\n", message.c_str());
     EXPECT_NE(message.find("ws/mattes"), std::string::npos) << message;
     EXPECT_NE(message.find("two separate objects"), std::string::npos) << message;
     EXPECT_NE(message.find("one tree at a time"), std::string::npos) << message;
