@@ -136,7 +136,7 @@ printf "\nbench: %.0f s wall\n" "$bench_s"
 # The plot: bytes (log x) against held-out RGB PSNR and alpha PSNR.
 for layout in raw zstd; do
   jq -r --arg l "$layout" '.rows[] | select(.layout == $l) |
-    "\(.bytes) \(.rgb_psnr) \(.alpha_psnr) \(.colour_codebook)/\(.alpha_codebook) \(if .colour_codebook == .alpha_codebook then 1 else 0 end)"' \
+    "\(.bytes) \(.rgb_psnr) \(.alpha_psnr) \(if .colour_codebook == .alpha_codebook then .colour_codebook else "\(.colour_codebook)/\(.alpha_codebook)" end) \(if .colour_codebook == .alpha_codebook then 1 else 0 end)"' \
     "$out/rate_distortion.json" >"$out/$layout.dat"
 done
 jq -r '.uncompressed_billboards | "\(.bytes) \(.rgb_psnr) \(.alpha_psnr)"' "$out/rate_distortion.json" >"$out/billboards.dat"
@@ -146,12 +146,13 @@ gnuplot <<EOF
 xmin = $xmin
 set terminal pngcairo size 1500,620 font "sans,11"
 set output "$out/rate_distortion.png"
-set multiplot layout 1,2 title "Demo oak: asset bytes against held-out PSNR (renderer's LOD, 8 held-out views). Linz 2006: their published texture memory after VQ for their own trees (no PSNR on ours)"
+set multiplot layout 1,2 title "Asset bytes against held-out PSNR (renderer's LOD; equal colour/alpha codebook sizes labelled by size). Dashed: Linz 2006's published texture memory for their own trees (no PSNR on ours)"
 set logscale x
 set xrange [xmin:1.2e8]
 set format x "%.0s %cB"
 set grid
-set key top left opaque box
+set key bottom right opaque box
+set offsets graph 0, graph 0, graph 0.1, graph 0.1
 set xlabel "asset bytes (log)"
 mib = 1048576.0
 set arrow 1 from 3.1e6, graph 0 to 3.1e6, graph 1 nohead dt 2 lc rgb "#aa5500"
@@ -163,23 +164,27 @@ set label 1 "Linz oak VQ 3.1 MB" at 3.1e6, graph 0.97 rotate by 90 right offset 
 set label 2 "Linz pine VQ 2.1 MB" at 2.1e6, graph 0.97 rotate by 90 right offset -0.8,0 tc rgb "#aa5500" font ",9"
 set label 3 "Linz small oak VQ 6.3 MB" at 6.3e6, graph 0.97 rotate by 90 right offset -0.8,0 tc rgb "#aa5500" font ",9"
 set label 4 "Linz oak uncompressed 72 MB" at 7.2e7, graph 0.97 rotate by 90 right offset -0.8,0 tc rgb "#aa5500" font ",9"
-set label 5 "1 MiB" at mib, graph 0.03 rotate by 90 left offset -0.8,0 tc rgb "#888888" font ",9"
+set label 5 "1 MiB" at mib, graph 0.97 rotate by 90 right offset -0.8,0 tc rgb "#888888" font ",9"
 set ylabel "held-out RGB PSNR (dB)"
 set title "RGB"
 plot "$out/raw.dat" using 1:(\$5 == 1 ? \$2 : 1/0) with linespoints pt 7 lc rgb "#1f77b4" title "raw chunks", \
      "$out/zstd.dat" using 1:(\$5 == 1 ? \$2 : 1/0) with linespoints pt 5 lc rgb "#2ca02c" title "--zstd", \
-     "$out/raw.dat" using 1:2:4 with labels offset 0,1 font ",8" notitle, \
+     "$out/raw.dat" using 1:(\$5 == 1 ? \$2 : 1/0):4 with labels right offset -1.2,0 font ",8" notitle, \
+     "$out/raw.dat" using 1:(\$5 == 0 ? \$2 : 1/0):4 with labels left offset 1.2,0 font ",8" notitle, \
      "$out/raw.dat" using 1:(\$5 == 0 ? \$2 : 1/0) with points pt 6 ps 1.5 lc rgb "#1f77b4" title "unequal colour/alpha (raw)", \
      "$out/zstd.dat" using 1:(\$5 == 0 ? \$2 : 1/0) with points pt 4 ps 1.5 lc rgb "#2ca02c" title "unequal colour/alpha (--zstd)", \
-     "$out/billboards.dat" using 1:2 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards"
+     "$out/billboards.dat" using 1:2 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards", \
+     "$out/billboards.dat" using 1:2:("uncompressed billboards") with labels right offset -1.5,0 font ",8" notitle
 set ylabel "held-out alpha PSNR (dB)"
 set title "alpha"
 plot "$out/raw.dat" using 1:(\$5 == 1 ? \$3 : 1/0) with linespoints pt 7 lc rgb "#1f77b4" title "raw chunks", \
      "$out/zstd.dat" using 1:(\$5 == 1 ? \$3 : 1/0) with linespoints pt 5 lc rgb "#2ca02c" title "--zstd", \
-     "$out/raw.dat" using 1:3:4 with labels offset 0,1 font ",8" notitle, \
+     "$out/raw.dat" using 1:(\$5 == 1 ? \$3 : 1/0):4 with labels right offset -1.2,0 font ",8" notitle, \
+     "$out/raw.dat" using 1:(\$5 == 0 ? \$3 : 1/0):4 with labels left offset 1.2,0 font ",8" notitle, \
      "$out/raw.dat" using 1:(\$5 == 0 ? \$3 : 1/0) with points pt 6 ps 1.5 lc rgb "#1f77b4" title "unequal colour/alpha (raw)", \
      "$out/zstd.dat" using 1:(\$5 == 0 ? \$3 : 1/0) with points pt 4 ps 1.5 lc rgb "#2ca02c" title "unequal colour/alpha (--zstd)", \
-     "$out/billboards.dat" using 1:3 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards"
+     "$out/billboards.dat" using 1:3 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards", \
+     "$out/billboards.dat" using 1:3:("uncompressed billboards") with labels right offset -1.5,0 font ",8" notitle
 unset multiplot
 EOF
 echo "plot: $out/rate_distortion.png"
