@@ -135,12 +135,29 @@ printf "\nbench: %.0f s wall\n" "$bench_s"
 
 # The plot: bytes (log x) against held-out RGB PSNR and alpha PSNR.
 for layout in raw zstd; do
-  jq -r --arg l "$layout" '.rows[] | select(.layout == $l) |
-    "\(.bytes) \(.rgb_psnr) \(.alpha_psnr) \(if .colour_codebook == .alpha_codebook then .colour_codebook else "\(.colour_codebook)/\(.alpha_codebook)" end) \(if .colour_codebook == .alpha_codebook then 1 else 0 end)"' \
-    "$out/rate_distortion.json" >"$out/$layout.dat"
+  for kind in equal unequal; do
+    jq -r --arg l "$layout" --arg k "$kind" '.rows[] | select(.layout == $l) |
+      select((.colour_codebook == .alpha_codebook) == ($k == "equal")) |
+      "\(.bytes) \(.rgb_psnr) \(.alpha_psnr) \(if $k == "equal" then .colour_codebook else "\(.colour_codebook)/\(.alpha_codebook)" end)"' \
+      "$out/rate_distortion.json" >"$out/${kind}_$layout.dat"
+  done
 done
 jq -r '.uncompressed_billboards | "\(.bytes) \(.rgb_psnr) \(.alpha_psnr)"' "$out/rate_distortion.json" >"$out/billboards.dat"
 command -v gnuplot >/dev/null || { echo "gnuplot not installed: no plot" >&2; exit 0; }
+# gnuplot's plot clauses for PSNR column $1 (2: RGB, 3: alpha), leaving out empty series
+clauses() {
+  local c=$1 d=$out list=()
+  [[ -s $d/equal_raw.dat ]] && list+=("\"$d/equal_raw.dat\" using 1:$c with linespoints pt 7 lc rgb \"#1f77b4\" title \"raw chunks\""
+    "\"$d/equal_raw.dat\" using 1:$c:4 with labels right offset -1.2,0 font \",8\" notitle")
+  [[ -s $d/equal_zstd.dat ]] && list+=("\"$d/equal_zstd.dat\" using 1:$c with linespoints pt 5 lc rgb \"#2ca02c\" title \"--zstd\"")
+  [[ -s $d/unequal_raw.dat ]] && list+=("\"$d/unequal_raw.dat\" using 1:$c with points pt 6 ps 1.5 lc rgb \"#1f77b4\" title \"unequal colour/alpha (raw)\""
+    "\"$d/unequal_raw.dat\" using 1:$c:4 with labels left offset 1.2,0 font \",8\" notitle")
+  [[ -s $d/unequal_zstd.dat ]] && list+=("\"$d/unequal_zstd.dat\" using 1:$c with points pt 4 ps 1.5 lc rgb \"#2ca02c\" title \"unequal colour/alpha (--zstd)\"")
+  list+=("\"$d/billboards.dat\" using 1:$c with points pt 9 ps 2 lc rgb \"#d62728\" title \"uncompressed billboards\""
+    "\"$d/billboards.dat\" using 1:$c:(\"uncompressed billboards\") with labels right offset -1.5,0 font \",8\" notitle")
+  local IFS=,
+  echo "${list[*]}"
+}
 xmin=$(jq '[.rows[].bytes] | min * 0.6' "$out/rate_distortion.json")
 gnuplot <<EOF
 xmin = $xmin
@@ -167,24 +184,10 @@ set label 4 "Linz oak uncompressed 72 MB" at 7.2e7, graph 0.97 rotate by 90 righ
 set label 5 "1 MiB" at mib, graph 0.97 rotate by 90 right offset -0.8,0 tc rgb "#888888" font ",9"
 set ylabel "held-out RGB PSNR (dB)"
 set title "RGB"
-plot "$out/raw.dat" using 1:(\$5 == 1 ? \$2 : 1/0) with linespoints pt 7 lc rgb "#1f77b4" title "raw chunks", \
-     "$out/zstd.dat" using 1:(\$5 == 1 ? \$2 : 1/0) with linespoints pt 5 lc rgb "#2ca02c" title "--zstd", \
-     "$out/raw.dat" using 1:(\$5 == 1 ? \$2 : 1/0):4 with labels right offset -1.2,0 font ",8" notitle, \
-     "$out/raw.dat" using 1:(\$5 == 0 ? \$2 : 1/0):4 with labels left offset 1.2,0 font ",8" notitle, \
-     "$out/raw.dat" using 1:(\$5 == 0 ? \$2 : 1/0) with points pt 6 ps 1.5 lc rgb "#1f77b4" title "unequal colour/alpha (raw)", \
-     "$out/zstd.dat" using 1:(\$5 == 0 ? \$2 : 1/0) with points pt 4 ps 1.5 lc rgb "#2ca02c" title "unequal colour/alpha (--zstd)", \
-     "$out/billboards.dat" using 1:2 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards", \
-     "$out/billboards.dat" using 1:2:("uncompressed billboards") with labels right offset -1.5,0 font ",8" notitle
+plot $(clauses 2)
 set ylabel "held-out alpha PSNR (dB)"
 set title "alpha"
-plot "$out/raw.dat" using 1:(\$5 == 1 ? \$3 : 1/0) with linespoints pt 7 lc rgb "#1f77b4" title "raw chunks", \
-     "$out/zstd.dat" using 1:(\$5 == 1 ? \$3 : 1/0) with linespoints pt 5 lc rgb "#2ca02c" title "--zstd", \
-     "$out/raw.dat" using 1:(\$5 == 1 ? \$3 : 1/0):4 with labels right offset -1.2,0 font ",8" notitle, \
-     "$out/raw.dat" using 1:(\$5 == 0 ? \$3 : 1/0):4 with labels left offset 1.2,0 font ",8" notitle, \
-     "$out/raw.dat" using 1:(\$5 == 0 ? \$3 : 1/0) with points pt 6 ps 1.5 lc rgb "#1f77b4" title "unequal colour/alpha (raw)", \
-     "$out/zstd.dat" using 1:(\$5 == 0 ? \$3 : 1/0) with points pt 4 ps 1.5 lc rgb "#2ca02c" title "unequal colour/alpha (--zstd)", \
-     "$out/billboards.dat" using 1:3 with points pt 9 ps 2 lc rgb "#d62728" title "uncompressed billboards", \
-     "$out/billboards.dat" using 1:3:("uncompressed billboards") with labels right offset -1.5,0 font ",8" notitle
+plot $(clauses 3)
 unset multiplot
 EOF
 echo "plot: $out/rate_distortion.png"
