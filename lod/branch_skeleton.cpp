@@ -9,27 +9,12 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "lod/disjoint_sets.h"
 #include "lod/leaf_separation.h"
 #include "lod/surface_colour.h"
 
 namespace voltree {
 namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int Find(int x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void Join(int a, int b) {
-    a = Find(a), b = Find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the smaller root wins: deterministic
-  }
-
- private:
-  std::vector<int> parent_;
-};
 
 // The bark as a graph: welded vertices (same position, one vertex), their colours and edges.
 struct BarkGraph {
@@ -131,7 +116,7 @@ void AddPiece(const BarkGraph& graph, const std::vector<int>& piece, int root, f
   std::map<int, int> band_of, local;
   for (const auto& [v, d] : distance)
     band_of[v] = static_cast<int>(d / band), local[v] = static_cast<int>(local.size());
-  UnionFind parts(local.size());
+  DisjointSets<int> parts(local.size());
   for (const auto& [v, b] : band_of)
     for (const auto& [w, length] : graph.edges[v])
       if (band_of.at(w) == b) parts.Join(local.at(v), local.at(w));
@@ -179,7 +164,7 @@ BranchSkeleton ExtractBranchSkeleton(const TreeMesh& mesh, const BranchSkeletonO
   BranchSkeleton skeleton;
   if (graph.positions.empty()) return skeleton;
   const float band = options.band > 0 ? static_cast<float>(options.band) : std::max(2 * MedianEdge(graph), 1e-6f);
-  UnionFind pieces(graph.positions.size());
+  DisjointSets<int> pieces(graph.positions.size());
   for (size_t v = 0; v < graph.edges.size(); ++v)
     for (const auto& [w, length] : graph.edges[v]) pieces.Join(static_cast<int>(v), w);
   std::map<int, std::vector<int>> by_piece;

@@ -7,27 +7,9 @@
 #include <string>
 #include <tuple>
 
+#include "lod/disjoint_sets.h"
+
 namespace voltree {
-namespace {
-
-// Union-find over vertex indices, with path halving.
-class DisjointSets {
- public:
-  explicit DisjointSets(size_t count) : parent_(count) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  uint32_t Find(uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void Join(uint32_t a, uint32_t b) {
-    a = Find(a), b = Find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the smaller root wins: deterministic
-  }
-
- private:
-  std::vector<uint32_t> parent_;
-};
-
-}  // namespace
 
 bool IsLeafMaterial(const Material& material) {
   return material.alpha_mode != AlphaMode::kOpaque || material.name == "leaves";
@@ -35,7 +17,7 @@ bool IsLeafMaterial(const Material& material) {
 
 std::vector<Leaf> SeparateLeaves(const TreeMesh& mesh) {
   std::vector<Leaf> leaves;
-  DisjointSets sets(mesh.vertices.size());
+  DisjointSets<uint32_t> sets(mesh.vertices.size());
   // Unwelded cards: vertices at the same position belong together.
   std::map<std::tuple<float, float, float>, uint32_t> first_at;
   for (const MeshGroup& group : mesh.groups) {

@@ -7,33 +7,10 @@
 #include "render/gl.h"
 #include "render/gl_context.h"
 #include "samples/studio_projection.h"
+#include "samples/studio_shading.h"
 
 namespace voltree {
 namespace {
-
-// The studio tree shader's light (samples/studio_tree_renderer.cpp), so that a point or a line
-// gets the colour the leaf or bark it stands for gets there.
-constexpr const char* kShadeGlsl = R"(
-uniform vec3 uSunDirection;
-uniform vec3 uSunColor;
-uniform vec3 uSkyAmbient;
-uniform vec3 uGroundAmbient;
-uniform vec3 uCrownCenter;
-uniform vec3 uCrownRadii;
-
-vec3 Shade(vec3 base, vec3 world, vec3 normal, bool double_sided) {
-  vec3 q = (world - uCrownCenter) / uCrownRadii;
-  float depth = clamp(length(q), 0.0, 1.0);
-  float sunward = dot(q, uSunDirection);
-  float sun_visibility = clamp(0.5 + 0.9 * sunward + 0.5 * (depth - 0.6), 0.12, 1.0);
-  float sky_visibility = mix(0.35, 1.0, smoothstep(0.2, 1.0, depth));
-  float n_dot_l = dot(normal, uSunDirection);
-  float diffuse = max(n_dot_l, 0.0);
-  if (double_sided) diffuse += 0.35 * max(-n_dot_l, 0.0);
-  vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * normal.z) * sky_visibility;
-  return base * (uSunColor * diffuse * sun_visibility + ambient);
-}
-)";
 
 constexpr const char* kPointVertex = R"(
 layout(location = 0) in vec3 aPosition;
@@ -199,8 +176,9 @@ PrimitiveRenderer::PrimitiveRenderer(const std::vector<PointPrimitive>& points, 
         {3, 2, offsetof(PackedCorner, width_side)}});
   glVertexArrayElementBuffer(line_array_.id(), line_indices_.id());
   const std::string header = std::string("#version 430 core\n") + kStudioProjectionGlsl;
-  point_program_ = ShaderProgram::Graphics("lod points", header + kPointVertex, header + kShadeGlsl + kPointFragment);
-  line_program_ = ShaderProgram::Graphics("lod lines", header + kLineVertex, header + kShadeGlsl + kLineFragment);
+  point_program_ =
+      ShaderProgram::Graphics("lod points", header + kPointVertex, header + kStudioShadeGlsl + kPointFragment);
+  line_program_ = ShaderProgram::Graphics("lod lines", header + kLineVertex, header + kStudioShadeGlsl + kLineFragment);
   CheckGl("uploading points and lines");
 }
 

@@ -6,6 +6,7 @@
 #include "core/srgb.h"
 #include "render/gl_context.h"
 #include "samples/studio_projection.h"
+#include "samples/studio_shading.h"
 
 namespace voltree {
 namespace {
@@ -47,12 +48,6 @@ uniform int uHasTexture;
 uniform vec4 uBaseColor;     // linear RGB, alpha
 uniform float uAlphaCutoff;  // < 0: opaque
 uniform int uDoubleSided;
-uniform vec3 uSunDirection;
-uniform vec3 uSunColor;
-uniform vec3 uSkyAmbient;
-uniform vec3 uGroundAmbient;
-uniform vec3 uCrownCenter;
-uniform vec3 uCrownRadii;
 uniform int uParts;        // 1: flat part colours instead of shading (truth masks of bark and leaves)
 uniform vec3 uPartColor;
 
@@ -74,19 +69,7 @@ void main() {
   // Face the viewer: leaves are cards seen from both sides, and flipped bark normals are noise.
   if (dot(normal, to_camera) < 0.0) normal = -normal;
 
-  // Self-shadowing of the crown without a shadow map: points deep inside the crown's ellipsoid
-  // and on its far side from the sun get less sun and less sky.
-  vec3 q = (vWorld - uCrownCenter) / uCrownRadii;
-  float depth = clamp(length(q), 0.0, 1.0);
-  float sunward = dot(q, uSunDirection);
-  float sun_visibility = clamp(0.5 + 0.9 * sunward + 0.5 * (depth - 0.6), 0.12, 1.0);
-  float sky_visibility = mix(0.35, 1.0, smoothstep(0.2, 1.0, depth));
-
-  float n_dot_l = dot(normal, uSunDirection);
-  float diffuse = max(n_dot_l, 0.0);
-  if (uDoubleSided != 0) diffuse += 0.35 * max(-n_dot_l, 0.0);  // light through the leaf
-  vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * normal.z) * sky_visibility;
-  vec3 color = base.rgb * (uSunColor * diffuse * sun_visibility + ambient);
+  vec3 color = Shade(base.rgb, vWorld, normal, uDoubleSided != 0);
   outColor = vec4(color, 1.0);
 #endif
 }
@@ -137,10 +120,11 @@ StudioTreeRenderer::StudioTreeRenderer(const TreeMesh& mesh) : materials_(mesh.m
   for (const Image8& texture : mesh.textures) textures_.emplace_back(texture, TextureOptions{});
 
   const std::string vertex = std::string("#version 430 core\n") + kStudioProjectionGlsl + kVertexMain;
-  depth_program_ = ShaderProgram::Graphics("studio tree depth", vertex,
-                                           std::string("#version 430 core\n#define DEPTH_ONLY 1\n") + kFragment);
-  program_ = ShaderProgram::Graphics("studio tree", vertex,
-                                     std::string("#version 430 core\n#define DEPTH_ONLY 0\n") + kFragment);
+  depth_program_ =
+      ShaderProgram::Graphics("studio tree depth", vertex,
+                              std::string("#version 430 core\n#define DEPTH_ONLY 1\n") + kStudioShadeGlsl + kFragment);
+  program_ = ShaderProgram::Graphics(
+      "studio tree", vertex, std::string("#version 430 core\n#define DEPTH_ONLY 0\n") + kStudioShadeGlsl + kFragment);
   depth_program_.Set("uTexture", 0);
   program_.Set("uTexture", 0);
 
