@@ -63,7 +63,8 @@ void AddLodBenchCommand(CLI::App& app) {
   auto* command = app.add_subcommand(
       "lod-bench",
       "Measure published levels of detail (stochastic pruning unscaled and with Cook et al.'s 1/lambda scaling, "
-      "Neubert et al.'s PR-optimal scaling, pruning ordered by viewpoint mutual information, Deussen et al.'s "
+      "Neubert et al.'s PR-optimal scaling, rendering priority, quality-matched detail level and colour correction, "
+      "pruning ordered by viewpoint mutual information, Deussen et al.'s "
       "points and lines, Clasen et al.'s clustered ellipsoids; with --asset, a voltree asset of the same tree) "
       "against the full mesh over a sweep of screen sizes, from the "
       "studio's held-out ring and from above. Writes table.md, lod_bench.json and plots/. "
@@ -85,6 +86,10 @@ void AddLodBenchCommand(CLI::App& app) {
       [](const std::string& text, std::vector<int>& out) { out = ParseSizes(text); }, JoinSizes(args->bench.sizes));
   AddOption(*command, "--min-lambda", args->bench.min_lambda);
   AddOption(*command, "--prune-seed", args->bench.seed);
+  AddChoice(*command, "--priority", args->bench.priority.terms,
+            {{"combined", PriorityTerms::kCombined},
+             {"silhouette", PriorityTerms::kSilhouette},
+             {"density", PriorityTerms::kDensity}});
   AddOption(*command, "--top-views", args->bench.top_views);
   AddOption(*command, "--asset", args->bench.asset);
   AddFlag(*command, "--save-views", args->bench.save_views);

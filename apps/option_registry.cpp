@@ -328,6 +328,10 @@ std::vector<OptionSpec> LodBenchFlags() {
        {"LodBenchOptions.min_lambda"},
        "The smallest fraction of leaves a size keeps, in (0, 1]; lambda = max(this, (size / frame)^2)"},
       {"--prune-seed", {"LodBenchOptions.seed"}, "Seed of the leaves' random pruning order"},
+      {"--priority",
+       {"RenderingPriorityOptions.terms"},
+       "Neubert's rendering priority for the neubert-priority, -matched and -colour rows: combined (silhouette^2 + "
+       "density, the paper's), silhouette or density alone"},
       {"--top-views",
        {"LodBenchOptions.top_views"},
        "Views from 80 degrees above the horizon, besides the held-out ring (0..16)"},

@@ -13,12 +13,14 @@
 #include "core/vtree.h"
 #include "render/tree_renderer.h"
 #include "lod/branch_skeleton.h"
+#include "lod/colour_correction.h"
 #include "lod/leaf_separation.h"
 #include "lod/line_simplification.h"
 #include "lod/lod_view_renderer.h"
 #include "lod/primitive_renderer.h"
 #include "lod/surface_colour.h"
 #include "lod/pruned_mesh.h"
+#include "lod/rendering_priority.h"
 #include "lod/screen_size_rule.h"
 #include "lod/stochastic_pruning.h"
 #include "lod/vmi_pruning.h"
@@ -175,6 +177,7 @@ void LodBenchOptions::Check() const {
   if (preprocess_views < 1) FailOption("LodBenchOptions.preprocess_views", "is ", preprocess_views, ", not >= 1");
   points.Check();
   ellipsoids.Check();
+  priority.Check();
 }
 
 namespace {
@@ -212,11 +215,14 @@ class LodBench {
     result.methods = {"full"};
     if (leaves_.empty()) {
       result.notes.push_back(
-          "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook, neubert and vmi "
-          "need leaves");
+          "the mesh has no separable leaves (no alpha-tested or blended material): pruned, cook, neubert, "
+          "neubert-priority, neubert-matched, neubert-colour and vmi need leaves");
     } else {
-      result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "vmi"});
+      result.methods.insert(result.methods.end(), {"pruned", "cook", "neubert", "neubert-priority", "neubert-matched",
+                                                   "neubert-colour", "vmi"});
+      OrderByPriority(result, progress);
       SearchOptimalScales(result, progress);
+      SelectDetailLevels(result, progress);
       RankByVmi(result, progress);
     }
     BuildPrimitives(result, progress);
@@ -279,28 +285,96 @@ class LodBench {
   // Neubert's preprocessing: the PR-optimal scale for each size's lambda, on the input views at
   // that size. (The paper tabulates over lambda alone, PR being invariant to screen size for its
   // renderer; here alpha-tested leaves lose coverage in coarse mip levels, so it is not.)
+  // Both orders: the random one (neubert) and the rendering priority (neubert-priority).
   void SearchOptimalScales(LodBenchResult& result, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     for (size_t s = 0; s < options_.sizes.size(); ++s) {
       const int size = options_.sizes[s];
       progress.Step("neubert scales", s, options_.sizes.size());
-      if (optimal_scale_.count(size)) continue;
-      const std::vector<View> at = AtSize(TrainingViews(), size);
-      const std::vector<LodFrame>& references = TrainingReferences(size);
-      ScaleSearch search;
-      search.size = size;
-      search.lambda = lambdas_[s];
-      for (double scale : CandidateAreaScales(search.lambda)) {
-        const StudioTreeRenderer tree(BuildPrunedMesh(mesh_, leaves_, PruneLeaves(order_, search.lambda, scale)));
-        const Pooled pooled = Pool(RenderAll(tree, at, supersample_), references);
-        search.trials.push_back({scale, pooled.coverage.Precision(), pooled.coverage.Recall()});
+      for (const char* method : {"neubert", "neubert-priority"}) {
+        if (optimal_scale_.count({method, size})) continue;
+        const ScaleSearch search = SearchScale(method, size, lambdas_[s]);
+        optimal_scale_[{method, size}] = search.best.area_scale;
+        result.scale_searches.push_back(search);
       }
-      search.best = BestScaleTrial(search.trials);
-      optimal_scale_[size] = search.best.area_scale;
-      result.scale_searches.push_back(search);
     }
     progress.Step("neubert scales", options_.sizes.size(), options_.sizes.size());
-    result.preprocess_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.preprocess_seconds = SecondsSince(start);
+  }
+
+  const std::vector<uint32_t>& OrderOf(const std::string& method) const {
+    return method.starts_with("neubert-") ? priority_order_ : order_;
+  }
+
+  // The PR of every candidate scale at `lambda` in the method's order, on the input views at `size`.
+  ScaleSearch SearchScale(const std::string& method, int size, double lambda) {
+    const std::vector<View> at = AtSize(TrainingViews(), size);
+    const std::vector<LodFrame>& references = TrainingReferences(size);
+    ScaleSearch search;
+    search.method = method;
+    search.size = size;
+    search.lambda = lambda;
+    for (double scale : CandidateAreaScales(lambda)) {
+      const StudioTreeRenderer tree(BuildPrunedMesh(mesh_, leaves_, PruneLeaves(OrderOf(method), lambda, scale)));
+      const Pooled pooled = Pool(RenderAll(tree, at, supersample_), references);
+      search.trials.push_back({scale, pooled.coverage.Precision(), pooled.coverage.Recall()});
+    }
+    search.best = BestScaleTrial(search.trials);
+    return search;
+  }
+
+  // Neubert's rendering priority (sec. 3): the combined order, in place of the random one.
+  void OrderByPriority(LodBenchResult& result, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    progress.Say("neubert priority", Str("density and silhouette of ", leaves_.size(), " leaves"));
+    RenderingPriorityOptions priority = options_.priority;
+    priority.seed = options_.seed;
+    priority_order_ = RenderingPriorityOrder(mesh_, leaves_, priority);
+    result.priority_seconds = SecondsSince(start);
+  }
+
+  // Neubert's detail level selection (sec. 2.5) at each size: the target is the quality of Cook's
+  // pruning there (random order, s = 1 / lambda, on the input views); the priority order with its
+  // PR-optimal scale is tried at the paper's sample lambdas, walking down from Cook's lambda while
+  // the target is met (up while it is not), and the smallest lambda meeting it is interpolated.
+  void SelectDetailLevels(LodBenchResult& result, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<double> grid = DetailLevelLambdas(options_.min_lambda);
+    for (size_t s = 0; s < options_.sizes.size(); ++s) {
+      const int size = options_.sizes[s];
+      progress.Step("neubert levels", s, options_.sizes.size());
+      if (matched_level_.count(size)) continue;
+      LevelSelection selection;
+      selection.size = size;
+      selection.cook_lambda = lambdas_[s];
+      const ScaleSearch* cook = nullptr;
+      const ScaleSearch* priority = nullptr;
+      for (const ScaleSearch& search : result.scale_searches)
+        if (search.size == size) (search.method == "neubert" ? cook : priority) = &search;
+      const ScaleTrial& at_cook = NearestTrial(cook->trials, CookAreaScale(selection.cook_lambda));
+      selection.target = PrScore(at_cook.precision, at_cook.recall);
+      const auto sample = [](const ScaleSearch& search) {
+        return LevelSample{search.lambda, search.best.area_scale, PrScore(search.best.precision, search.best.recall)};
+      };
+      selection.samples.push_back(sample(*priority));
+      if (selection.target < 1) {  // at lambda 1 nothing less than the full mesh matches it
+        const bool down = selection.samples.front().quality >= selection.target;
+        std::vector<double> walk;
+        for (double lambda : grid)
+          if (down ? lambda < selection.cook_lambda - 1e-9 : lambda > selection.cook_lambda + 1e-9)
+            walk.push_back(lambda);
+        if (down) std::reverse(walk.begin(), walk.end());
+        for (double lambda : walk) {
+          selection.samples.push_back(sample(SearchScale("neubert-matched", size, lambda)));
+          if ((selection.samples.back().quality >= selection.target) != down) break;
+        }
+      }
+      selection.matched = QualityMatchedLevel(selection.samples, selection.target);
+      matched_level_[size] = selection.matched;
+      result.level_selections.push_back(selection);
+    }
+    progress.Step("neubert levels", options_.sizes.size(), options_.sizes.size());
+    result.level_selection_seconds = SecondsSince(start);
   }
 
   // The VMI removal sequence, down to the fewest leaves any size keeps, from the input views.
@@ -495,8 +569,11 @@ class LodBench {
       *area_scale = sum / static_cast<double>(std::max<size_t>(draws.size(), 1));  // mean: each leaf has its own
       return draws;
     }
-    *area_scale = method == "pruned" ? 1.0 : method == "cook" ? CookAreaScale(lambda) : optimal_scale_.at(size);
-    return PruneLeaves(order_, lambda, *area_scale);
+    *area_scale = method == "pruned"                                          ? 1.0
+                  : method == "cook"                                          ? CookAreaScale(lambda)
+                  : method == "neubert-matched" || method == "neubert-colour" ? matched_level_.at(size).area_scale
+                                                                              : optimal_scale_.at({method, size});
+    return PruneLeaves(OrderOf(method), lambda, *area_scale);
   }
 
   LodBenchRow MeasureMethod(const std::string& method, int size, double lambda, const std::vector<View>& at,
@@ -511,10 +588,11 @@ class LodBench {
       row.leaves = leaves_.size();
       frames = ReferenceSupersample(size) == supersample_ ? references : RenderAll(full_, at, supersample_);
     } else {
-      row.lambda = lambda;
-      const std::vector<LeafDraw> draws = Draws(method, size, lambda, &row.area_scale);
+      row.lambda = method == "neubert-matched" || method == "neubert-colour" ? matched_level_.at(size).lambda : lambda;
+      const std::vector<LeafDraw> draws = Draws(method, size, row.lambda, &row.area_scale);
       row.leaves = draws.size();
-      pruned = BuildPrunedMesh(mesh_, leaves_, draws);
+      pruned = method == "neubert-colour" ? BuildPrunedMesh(RecolouredMesh(draws, row.lambda), leaves_, draws)
+                                          : BuildPrunedMesh(mesh_, leaves_, draws);
       drawn = &pruned;
       const StudioTreeRenderer tree(pruned);
       frames = RenderAll(tree, at, supersample_);
@@ -525,6 +603,14 @@ class LodBench {
     Keep(row, frames.front().foreground, /*straight=*/false);
     FillQuality(row, Pool(frames, references));
     return row;
+  }
+
+  // Neubert's sec. 5 and Cook's contrast correction: the survivors' colours matched to the full
+  // tree's mean and, by sqrt(lambda), to its pixels' variance.
+  TreeMesh RecolouredMesh(const std::vector<LeafDraw>& draws, double lambda) {
+    if (leaf_colours_.empty()) leaf_colours_ = LeafColours(mesh_, leaves_);
+    return WithLeafColours(mesh_, leaves_, draws, leaf_colours_,
+                           CorrectedLeafColours(leaf_colours_, leaves_, draws, ContrastFactor(lambda)));
   }
 
   LodBenchRow MeasureAsset(int size, const std::vector<View>& at, const std::vector<LodFrame>& references) {
@@ -563,9 +649,12 @@ class LodBench {
   const StudioRig rig_;
   const std::vector<View> views_;
   const StudioTreeRenderer full_;
-  std::map<int, double> optimal_scale_;                       // by size
-  std::map<int, std::vector<LodFrame>> training_references_;  // by size
-  std::map<std::pair<int, int>, double> ellipsoid_scale_;     // by size and clusters
+  std::vector<uint32_t> priority_order_;                         // Neubert's rendering priority
+  std::map<std::pair<std::string, int>, double> optimal_scale_;  // by method and size
+  std::map<int, LevelSample> matched_level_;                     // neubert-matched, by size
+  std::vector<Eigen::Vector3f> leaf_colours_;                    // every leaf's, for neubert-colour
+  std::map<int, std::vector<LodFrame>> training_references_;     // by size
+  std::map<std::pair<int, int>, double> ellipsoid_scale_;        // by size and clusters
   std::vector<VmiRemoval> vmi_sequence_;
   std::unique_ptr<TreeRenderer> asset_;
   const std::pair<Eigen::Vector3f, Eigen::Vector3f> crown_;

@@ -12,9 +12,11 @@
 
 #include "core/image.h"
 #include "core/progress.h"
+#include "lod/detail_level_selection.h"
 #include "lod/ellipsoid_clusters.h"
 #include "lod/point_line_hierarchy.h"
 #include "lod/pr_optimal_scale.h"
+#include "lod/rendering_priority.h"
 #include "samples/studio_options.h"
 #include "samples/tree_mesh.h"
 
@@ -45,6 +47,9 @@ struct LodBenchOptions {
   // The primitive methods: Deussen et al.'s points and lines, Clasen et al.'s ellipsoids.
   PointLineOptions points;
   EllipsoidClusterOptions ellipsoids;
+  // Neubert's rendering priority (the rows neubert-priority and neubert-matched); its jitter's
+  // seed is `seed`.
+  RenderingPriorityOptions priority;
 
   // Throws OptionError naming the field (sizes outside [8, frame height], min_lambda outside (0, 1]).
   void Check() const;
@@ -72,10 +77,22 @@ struct LodBenchRow {
 // Neubert's preprocessing for one size and its lambda: every candidate scale's PR, and the
 // chosen one.
 struct ScaleSearch {
+  std::string method = "neubert";  // neubert: the random order; neubert-priority: the priority order
   int size = 0;
   double lambda = 1;
   std::vector<ScaleTrial> trials;
   ScaleTrial best;
+};
+
+// Neubert's detail level selection at one size: Cook's lambda and quality there (random order,
+// s = 1 / lambda), the geometry levels tried with the priority order and PR-optimal scale, and
+// the quality-matched level.
+struct LevelSelection {
+  int size = 0;
+  double cook_lambda = 1;
+  double target = 1;  // Q(lambda_Cook, s_Cook) on the input views
+  std::vector<LevelSample> samples;
+  LevelSample matched;
 };
 
 // Clasen's calibration of the ellipsoids' size at one size: every candidate scale of the
@@ -104,9 +121,12 @@ struct LodBenchResult {
   std::vector<LodBenchRow> rows;
   std::vector<ScaleSearch> scale_searches;
   double preprocess_seconds = 0;  // Neubert's scale search, all sizes
-  double vmi_seconds = 0;         // the VMI removal sequence
-  double skeleton_seconds = 0;    // the branch skeleton from the bark (both primitive methods)
-  double points_seconds = 0;      // sampling the points
+  double priority_seconds = 0;    // Neubert's rendering priority order
+  std::vector<LevelSelection> level_selections;
+  double level_selection_seconds = 0;  // Neubert's detail level selection, all sizes
+  double vmi_seconds = 0;              // the VMI removal sequence
+  double skeleton_seconds = 0;         // the branch skeleton from the bark (both primitive methods)
+  double points_seconds = 0;           // sampling the points
   size_t sampled_points = 0, skeleton_segments = 0;
   double ellipsoid_seconds = 0;       // the EM fits of every level and their ellipsoids
   double line_merge_seconds = 0;      // the branch lines merged down to one
@@ -118,7 +138,9 @@ struct LodBenchResult {
 };
 
 // The methods: "full" (the reference mesh itself), "pruned" (lambda, no scaling), "cook"
-// (lambda, s = 1 / lambda), "neubert" (lambda, PR-optimal s) and "vmi" (lambda, leaves removed
+// (lambda, s = 1 / lambda), "neubert" (lambda, PR-optimal s), "neubert-priority" (the same with
+// the rendering priority order instead of the random one), "neubert-matched" (the priority order
+// at the quality-matched lambda and its PR-optimal s) and "vmi" (lambda, leaves removed
 // in the VMI order, each removal growing its nearest leaf; area_scale is the mean). Needs a GL
 // context of its own. With options.asset, also "asset": triangles are 2 per cell drawn, GPU bytes
 // its buffers and DXT5 atlas, draw time the renderer's frame time, fragments not measured.

@@ -60,17 +60,30 @@ std::string LodBenchTable(const LodBenchResult& result) {
   if (!result.scale_searches.empty()) {
     text += Str("\n## Neubert's PR-optimal scale (preprocessing on the input views, ",
                 Fixed(result.preprocess_seconds, 1), " s)\n\n",
-                "| size px | lambda | Cook s = 1/lambda | PR score at Cook's s | s_opt | PR score at s_opt |\n"
-                "|---:|---:|---:|---:|---:|---:|\n");
+                "| order | size px | lambda | Cook s = 1/lambda | PR score at Cook's s | s_opt | PR score at s_opt |\n"
+                "|---|---:|---:|---:|---:|---:|---:|\n");
     for (const ScaleSearch& search : result.scale_searches) {
       // Cook's scale is the candidate lambda^-1 (t = 1); the nearest one is reported.
-      const ScaleTrial* cook = &search.trials.front();
-      for (const ScaleTrial& trial : search.trials)
-        if (std::abs(std::log(trial.area_scale * search.lambda)) < std::abs(std::log(cook->area_scale * search.lambda)))
-          cook = &trial;
-      text += Str("| ", search.size, " | ", Fixed(search.lambda, 4), " | ", Fixed(cook->area_scale, 2), " | ",
-                  Fixed(PrScore(cook->precision, cook->recall), 4), " | ", Fixed(search.best.area_scale, 2), " | ",
+      const ScaleTrial& cook = NearestTrial(search.trials, 1 / search.lambda);
+      text += Str("| ", search.method == "neubert" ? "random" : "priority", " | ", search.size, " | ",
+                  Fixed(search.lambda, 4), " | ", Fixed(cook.area_scale, 2), " | ",
+                  Fixed(PrScore(cook.precision, cook.recall), 4), " | ", Fixed(search.best.area_scale, 2), " | ",
                   Fixed(PrScore(search.best.precision, search.best.recall), 4), " |\n");
+    }
+    text += Str("\nRendering priority order (density and silhouette): ", Fixed(result.priority_seconds, 2), " s\n");
+  }
+  if (!result.level_selections.empty()) {
+    text += Str("\n## Neubert's detail level selection (input views, ", Fixed(result.level_selection_seconds, 1),
+                " s): the smallest lambda whose priority order and PR-optimal scale match Cook's PR score\n\n",
+                "| size px | lambda Cook | PR score Cook | levels tried (lambda: score) | lambda matched | s_opt |\n"
+                "|---:|---:|---:|---|---:|---:|\n");
+    for (const LevelSelection& selection : result.level_selections) {
+      std::string tried;
+      for (const LevelSample& sample : selection.samples)
+        tried += Str(tried.empty() ? "" : ", ", Fixed(sample.lambda, 3), ": ", Fixed(sample.quality, 3));
+      text +=
+          Str("| ", selection.size, " | ", Fixed(selection.cook_lambda, 4), " | ", Fixed(selection.target, 4), " | ",
+              tried, " | ", Fixed(selection.matched.lambda, 4), " | ", Fixed(selection.matched.area_scale, 2), " |\n");
     }
   }
   if (result.vmi_seconds > 0)
@@ -154,10 +167,23 @@ std::string LodBenchJson(const LodBenchResult& result) {
     nlohmann::json trials = nlohmann::json::array();
     for (const ScaleTrial& trial : search.trials)
       trials.push_back({{"area_scale", trial.area_scale}, {"precision", trial.precision}, {"recall", trial.recall}});
-    searches.push_back({{"size", search.size},
+    searches.push_back({{"method", search.method},
+                        {"size", search.size},
                         {"lambda", search.lambda},
                         {"best_area_scale", search.best.area_scale},
                         {"trials", trials}});
+  }
+  nlohmann::json selections = nlohmann::json::array();
+  for (const LevelSelection& selection : result.level_selections) {
+    nlohmann::json samples = nlohmann::json::array();
+    for (const LevelSample& sample : selection.samples)
+      samples.push_back({{"lambda", sample.lambda}, {"area_scale", sample.area_scale}, {"pr_score", sample.quality}});
+    selections.push_back({{"size", selection.size},
+                          {"cook_lambda", selection.cook_lambda},
+                          {"cook_pr_score", selection.target},
+                          {"lambda", selection.matched.lambda},
+                          {"area_scale", selection.matched.area_scale},
+                          {"samples", samples}});
   }
   nlohmann::json calibrations = nlohmann::json::array();
   for (const EllipsoidCalibration& calibration : result.ellipsoid_calibrations) {
@@ -181,6 +207,9 @@ std::string LodBenchJson(const LodBenchResult& result) {
                                {"rows", rows},
                                {"scale_searches", searches},
                                {"preprocess_seconds", result.preprocess_seconds},
+                               {"priority_seconds", result.priority_seconds},
+                               {"level_selections", selections},
+                               {"level_selection_seconds", result.level_selection_seconds},
                                {"vmi_seconds", result.vmi_seconds},
                                {"skeleton_seconds", result.skeleton_seconds},
                                {"points_seconds", result.points_seconds},
@@ -244,16 +273,13 @@ void WriteLodBench(const LodBenchResult& result, const std::filesystem::path& fo
                           "precision", "recall");
   PlotSeries cook{"Cook s = 1/lambda", {}}, best{"PR-optimal s", {}};
   for (const ScaleSearch& search : result.scale_searches) {
-    if (search.trials.size() < 2) continue;  // lambda 1: nothing to choose
+    // lambda 1: nothing to choose; the priority order's searches would double the curves.
+    if (search.trials.size() < 2 || search.method != "neubert") continue;
     PlotSeries curve{Str(search.size, " px, lambda ", Fixed(search.lambda, 3)), {}};
     for (const ScaleTrial& trial : search.trials) curve.points.emplace_back(trial.precision, trial.recall);
     pr.series.push_back(curve);
-    const ScaleTrial* nearest = &search.trials.front();
-    for (const ScaleTrial& trial : search.trials)
-      if (std::abs(std::log(trial.area_scale * search.lambda)) <
-          std::abs(std::log(nearest->area_scale * search.lambda)))
-        nearest = &trial;
-    cook.points.emplace_back(nearest->precision, nearest->recall);
+    const ScaleTrial& nearest = NearestTrial(search.trials, 1 / search.lambda);
+    cook.points.emplace_back(nearest.precision, nearest.recall);
     best.points.emplace_back(search.best.precision, search.best.recall);
   }
   pr.series.push_back(cook);

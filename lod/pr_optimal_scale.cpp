@@ -19,6 +19,15 @@ const ScaleTrial& BestScaleTrial(const std::vector<ScaleTrial>& trials) {
   return *best;
 }
 
+const ScaleTrial& NearestTrial(const std::vector<ScaleTrial>& trials, double area_scale) {
+  if (trials.empty()) Fail("lod: no scale trials to choose from");
+  const ScaleTrial* nearest = &trials.front();
+  for (const ScaleTrial& trial : trials)
+    if (std::abs(std::log(trial.area_scale / area_scale)) < std::abs(std::log(nearest->area_scale / area_scale)))
+      nearest = &trial;
+  return *nearest;
+}
+
 std::vector<double> CandidateAreaScales(double lambda) {
   if (!(lambda > 0 && lambda <= 1)) Fail("lod: the kept fraction lambda = ", lambda, " is outside (0, 1]");
   std::vector<double> scales;

@@ -21,6 +21,10 @@ struct ScaleTrial {
 // The trial with the highest PrScore (eq. 3); on a tie the smallest scale. Throws Error when empty.
 const ScaleTrial& BestScaleTrial(const std::vector<ScaleTrial>& trials);
 
+// The trial whose scale is nearest `area_scale` in ratio (e.g. Cook's 1 / lambda among the
+// candidates). Throws Error when empty.
+const ScaleTrial& NearestTrial(const std::vector<ScaleTrial>& trials, double area_scale);
+
 // The candidate area scales tried for one lambda: lambda^-t for t = 0, 0.1, ..., 1.3, from no
 // scaling through Cook's 1 / lambda (t = 1) to beyond it.
 std::vector<double> CandidateAreaScales(double lambda);

@@ -78,9 +78,10 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
       EXPECT_LT(row["lambda"].get<double>(), 1.0) << row;
     }
   }
-  for (const char* method : {"full", "pruned", "cook", "neubert", "vmi", "points", "ellipsoids"})
+  for (const char* method : {"full", "pruned", "cook", "neubert", "neubert-priority", "neubert-matched",
+                             "neubert-colour", "vmi", "points", "ellipsoids"})
     for (int size : {48, 24, 12}) EXPECT_TRUE(seen.count({method, size})) << method << " " << size;
-  EXPECT_EQ(seen.size(), 21u);
+  EXPECT_EQ(seen.size(), 30u);
 
   // The same inputs and seeds: the same numbers (draw times and fragment counts aside).
   ASSERT_EQ(Run("--sizes 48,24,12 -o again").status, 0);
@@ -88,8 +89,9 @@ TEST_F(LodBenchCli, TheTableHasEveryMethodAtEverySizeAndFullSizeMatchesTheRefere
   nlohmann::json first = json;
   for (nlohmann::json* j : {&first, &again}) {
     (*j).erase("preprocess_seconds");
-    for (const char* seconds : {"vmi_seconds", "skeleton_seconds", "points_seconds", "ellipsoid_seconds",
-                                "line_merge_seconds", "ellipsoid_calibration_seconds"})
+    for (const char* seconds :
+         {"vmi_seconds", "priority_seconds", "level_selection_seconds", "skeleton_seconds", "points_seconds",
+          "ellipsoid_seconds", "line_merge_seconds", "ellipsoid_calibration_seconds"})
       (*j).erase(seconds);
     for (auto& row : (*j)["rows"]) {  // measured costs, not promised to repeat on every driver
       row.erase("draw_ms");
