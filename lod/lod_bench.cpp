@@ -326,7 +326,7 @@ class LodBench {
   // Neubert's rendering priority (sec. 3): the combined order, in place of the random one.
   void OrderByPriority(LodBenchResult& result, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    progress.Say("neubert priority", Str("density and silhouette of ", leaves_.size(), " leaves"));
+    progress.Say("neubert priority", Str("ordering ", leaves_.size(), " leaves"));
     RenderingPriorityOptions priority = options_.priority;
     priority.seed = options_.seed;
     priority_order_ = RenderingPriorityOrder(mesh_, leaves_, priority);

@@ -70,7 +70,7 @@ std::string LodBenchTable(const LodBenchResult& result) {
                   Fixed(PrScore(cook.precision, cook.recall), 4), " | ", Fixed(search.best.area_scale, 2), " | ",
                   Fixed(PrScore(search.best.precision, search.best.recall), 4), " |\n");
     }
-    text += Str("\nRendering priority order (density and silhouette): ", Fixed(result.priority_seconds, 2), " s\n");
+    text += Str("\nRendering priority order (preprocessing): ", Fixed(result.priority_seconds, 2), " s\n");
   }
   if (!result.level_selections.empty()) {
     text += Str("\n## Neubert's detail level selection (input views, ", Fixed(result.level_selection_seconds, 1),
