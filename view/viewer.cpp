@@ -396,9 +396,9 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     if (screenshot_wait.Ready(session.screenshot_requested, stats.cells_per_level)) {  // before the panel
       session.screenshot_requested = false;
       const std::filesystem::path png = SaveScreenshot(options, camera, ReadWindow(width, height));
-      std::printf("%s (camera: %s; %zu billboards drawn; %s)\n", png.c_str(),
+      std::printf("%s (camera: %s; %zu billboards drawn; LOD %s; %s)\n", png.c_str(),
                   png.parent_path().append(png.stem().string()).c_str(), stats.billboards,
-                  drawing.Pruning(session.unpruned).c_str());
+                  LodRuleName(session.render.lod.rule), drawing.Pruning(session.unpruned).c_str());
       result.screenshots.push_back(png);
     }
     if (options.panel) {

@@ -127,6 +127,9 @@ TEST_F(ViewWindow, TogglesMatchRenderOptionsAndResetReturns) {
   EXPECT_GE(level, kMinPsnr);
   EXPECT_LT(level_auto, level - 3) << "the forced level looks like the automatic LOD";
   EXPECT_GE(planes, kMinPsnr);
+  EXPECT_NE(outcome.output.find("view_004.png (camera: " + (shots / "view_004").string()), std::string::npos);
+  EXPECT_NE(outcome.output.find("billboards drawn; LOD planes;"), std::string::npos) << "L did not switch the rule";
+  EXPECT_EQ(outcome.output.find("LOD planes"), outcome.output.rfind("LOD planes")) << outcome.output;
 }
 
 // The billboards drawn, as the viewer prints them after each screenshot's name.
