@@ -276,6 +276,10 @@ std::vector<OptionSpec> BatchFlags() {
 // The desktop viewer (view).
 std::vector<OptionSpec> ViewerFlags() {
   return {
+      {"--unpruned",
+       {"ViewerOptions.unpruned"},
+       "The same capture's asset built without pruning (reconstruct --prune 1, then compress); U switches to it "
+       "and back"},
       {"--script",
        {"ViewerOptions.script"},
        "Scripted events, one a line: SECONDS drag|pan DX DY, scroll STEPS, key K, screenshot, quit; the session ends "

@@ -15,6 +15,7 @@
 #include "core/colmap_model.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/fixed.h"
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/gl.h"
@@ -34,8 +35,28 @@ std::string g_glfw_error;  // GLFW reports errors through a callback, before the
 struct Drawing {
   std::optional<VtreeAsset> asset;
   std::unique_ptr<TreeRenderer> tree;
+  std::optional<VtreeAsset> unpruned_asset;  // --unpruned: the same capture without pruning
+  std::unique_ptr<TreeRenderer> unpruned_tree;
   std::optional<Scene> scene;
   std::unique_ptr<SceneRenderer> scene_renderer;
+
+  // The asset drawn: the --unpruned one after U, when there is one.
+  TreeRenderer& Tree(bool unpruned) const { return unpruned && unpruned_tree ? *unpruned_tree : *tree; }
+
+  // The panel's pruning line: the share of billboards pruning took out of the asset drawn.
+  std::string Pruning(bool unpruned) const {
+    if (scene_renderer) return "pruning on (the scene's assets as built)";
+    const bool off = unpruned && unpruned_asset;
+    const VtreeAsset& shown = off ? *unpruned_asset : *asset;
+    uint64_t before = 0;
+    for (const VtreeLevel& level : shown.levels) before += level.billboards_before_pruning;
+    const size_t kept = shown.BillboardCount();
+    return Str(off              ? "pruning off (U)"
+               : unpruned_asset ? "pruning on (U)"
+                                : "pruning on (--unpruned to compare)",
+               ": ", kept, " of ", before, " billboards in the asset (",
+               FixedDecimals(before > 0 ? 100.0 * (1.0 - double(kept) / double(before)) : 0.0, 1), " % pruned)");
+  }
 
   // Where `voltree render --orbit` starts.
   OrbitState Home() const {
@@ -83,6 +104,7 @@ struct Session {
   bool dragging = false, panning = false;
   double last_x = 0, last_y = 0;
   bool screenshot_requested = false, quit = false;
+  bool unpruned = false;  // U: draw the --unpruned asset
 };
 
 void PressKey(Session& session, const std::string& key) {
@@ -92,6 +114,8 @@ void PressKey(Session& session, const std::string& key) {
     session.render.lod.rule = session.render.lod.rule == LodRule::kScreen ? LodRule::kPlanes : LodRule::kScreen;
   } else if (key == "V") {
     session.render.nearest_view_only = !session.render.nearest_view_only;
+  } else if (key == "U") {
+    session.unpruned = !session.unpruned;
   } else if (key == "R") {
     session.orbit.Reset();
   } else if (key == "W" || key == "S" || key == "A" || key == "D") {
@@ -182,7 +206,7 @@ std::filesystem::path SaveScreenshot(const ViewerOptions& options, const View& c
 }
 
 void DrawPanel(const ViewerOptions& options, const Session& session, const PanelStats& stats, const GpuMemory& gpu,
-               const std::string& renderer) {
+               const std::string& renderer, const std::string& pruning) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin(options.input.filename().c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -205,9 +229,10 @@ void DrawPanel(const ViewerOptions& options, const Session& session, const Panel
   ImGui::Text("GPU %.1f KiB (buffers %.1f, atlases %.1f)", gpu.Total() / 1024.0, gpu.buffers / 1024.0,
               gpu.atlas / 1024.0);
   ImGui::Text("LOD %s, tint %s", LodRuleName(session.render.lod.rule), session.render.tint_levels ? "on" : "off");
+  ImGui::Text("%s", pruning.c_str());
   ImGui::TextDisabled("%s", renderer.c_str());
   ImGui::TextDisabled("drag turn, right drag pan, wheel zoom, WASD fly, R reset");
-  ImGui::TextDisabled("T tint, L LOD rule, 0-9 level, V nearest view / blend, P screenshot, Esc quit");
+  ImGui::TextDisabled("T tint, L LOD rule, 0-9 level, V nearest view / blend, U pruning, P screenshot, Esc quit");
   ImGui::End();
 }
 
@@ -240,17 +265,45 @@ void ClearWindow(int width, int height, const std::array<float, 4>& background) 
 }
 
 // One frame of the tree or the scene at `camera`, and what the panel shows of it.
-PanelStats Draw(Drawing& drawing, const View& camera, const TreeRenderOptions& render) {
+PanelStats Draw(Drawing& drawing, const View& camera, const TreeRenderOptions& render, bool unpruned) {
   if (drawing.scene_renderer) {
     const SceneFrameStats frame = drawing.scene_renderer->Draw(camera, {render});
     return {frame.frame_ms,        frame.trees.cells,      frame.trees.billboards,
             frame.instances_drawn, frame.instances_culled, frame.trees.min_level,
             frame.trees.max_level, frame.trees.views,      frame.trees.cells_per_level};
   }
-  const FrameStats frame = drawing.tree->Draw(camera, render);
+  const FrameStats frame = drawing.Tree(unpruned).Draw(camera, render);
   return {frame.frame_ms,  frame.cells, frame.billboards,     1, 0, frame.min_level,
           frame.max_level, frame.views, frame.cells_per_level};
 }
+
+// --unpruned: an asset of the same capture (the same input views), else U would compare two trees.
+VtreeAsset ReadUnprunedAsset(const std::filesystem::path& file, const VtreeAsset& pruned) {
+  VtreeAsset unpruned = ReadAsset(file);
+  bool same = unpruned.views.size() == pruned.views.size();
+  for (size_t i = 0; same && i < pruned.views.size(); ++i)
+    same = (unpruned.views[i].position - pruned.views[i].position).norm() <= 1e-6 * pruned.size;
+  if (!same)
+    Fail("view: --unpruned ", file.string(), " has other input views (", unpruned.views.size(), ") than the asset (",
+         pruned.views.size(), "); expected the same capture reconstructed with --prune 1");
+  return unpruned;
+}
+
+// A screenshot waits until the LOD choice at its camera has settled (the cells drawn per level
+// are those of the frame before: LOD hysteresis refines from the previous frame's choice), so
+// that it shows what `render --cameras` draws from that camera however slowly frames come.
+struct ScreenshotWait {
+  static constexpr int kMaxFrames = 12;
+  int frames = 0;  // drawn since the request
+  std::vector<size_t> previous;
+  // After each frame: whether the requested screenshot is taken of it.
+  bool Ready(bool requested, const std::vector<size_t>& cells_per_level) {
+    const bool ready = requested && frames > 0 && (cells_per_level == previous || frames >= kMaxFrames);
+    frames = requested && !ready ? frames + 1 : 0;
+    previous = cells_per_level;
+    return ready;
+  }
+};
 
 double Median(std::vector<double> values) {
   if (values.empty()) return 0;
@@ -267,6 +320,9 @@ void ViewerOptions::Check() const {
     Fail("view: --size ", width, "x", height, " must be between 64 and 16384 on each side");
   if (!asset_folder.empty() && !IsSceneFile(input))
     Fail("view: --assets applies to a scene (.json), not to ", input.string());
+  if (!unpruned.empty() && IsSceneFile(input))
+    Fail("view: --unpruned applies to an asset (.vtree), not to the scene ", input.string());
+  if (!unpruned.empty() && !std::filesystem::is_regular_file(unpruned)) Fail(unpruned.string(), ": file not found");
 }
 
 ViewerResult RunViewer(const ViewerOptions& options) {
@@ -280,6 +336,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     scene_assets = ReadSceneAssets(*drawing.scene);
   } else {
     drawing.asset = ReadAsset(options.input);
+    if (!options.unpruned.empty()) drawing.unpruned_asset = ReadUnprunedAsset(options.unpruned, *drawing.asset);
   }
 
   glfwSetErrorCallback([](int, const char* message) { g_glfw_error = message; });
@@ -299,6 +356,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     drawing.scene_renderer = std::make_unique<SceneRenderer>(*drawing.scene, scene_assets);
   } else {
     drawing.tree = std::make_unique<TreeRenderer>(*drawing.asset);
+    if (drawing.unpruned_asset) drawing.unpruned_tree = std::make_unique<TreeRenderer>(*drawing.unpruned_asset);
   }
   Session session(drawing.Home());
   glfwSetWindowUserPointer(window, &session);
@@ -315,12 +373,15 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   size_t next_event = 0;
   const double start = glfwGetTime();
   PanelStats stats;
+  ScreenshotWait screenshot_wait;
   std::vector<double> frame_ms;
   while (!glfwWindowShouldClose(window) && !session.quit) {
     glfwPollEvents();
     const double now = glfwGetTime() - start;
-    // Scripted events run in order once their time has come, one batch per frame.
-    while (next_event < script.size() && script[next_event].seconds <= now) Apply(session, script[next_event++]);
+    // Scripted events run in order once their time has come, one batch per frame; a screenshot
+    // holds the events after it until it is taken (slow frames must not merge them).
+    while (!session.screenshot_requested && next_event < script.size() && script[next_event].seconds <= now)
+      Apply(session, script[next_event++]);
     if (!script.empty() && next_event == script.size() && !session.screenshot_requested) session.quit = true;
 
     int width = 0, height = 0;
@@ -328,20 +389,23 @@ ViewerResult RunViewer(const ViewerOptions& options) {
     if (width < 1 || height < 1) continue;  // minimized
     const View camera = session.orbit.Camera(width, height);
     ClearWindow(width, height, options.background);
-    stats = Draw(drawing, camera, session.render);
-    const GpuMemory gpu = drawing.scene_renderer ? drawing.scene_renderer->GpuBytes() : drawing.tree->GpuBytes();
+    stats = Draw(drawing, camera, session.render, session.unpruned);
+    const GpuMemory gpu =
+        drawing.scene_renderer ? drawing.scene_renderer->GpuBytes() : drawing.Tree(session.unpruned).GpuBytes();
     CheckGl("view: drawing");
-    if (session.screenshot_requested) {  // the frame as drawn, before the panel goes over it
+    if (screenshot_wait.Ready(session.screenshot_requested, stats.cells_per_level)) {  // before the panel
       session.screenshot_requested = false;
       const std::filesystem::path png = SaveScreenshot(options, camera, ReadWindow(width, height));
-      std::printf("%s (camera: %s)\n", png.c_str(), png.parent_path().append(png.stem().string()).c_str());
+      std::printf("%s (camera: %s; %zu billboards drawn; LOD %s; %s)\n", png.c_str(),
+                  png.parent_path().append(png.stem().string()).c_str(), stats.billboards,
+                  LodRuleName(session.render.lod.rule), drawing.Pruning(session.unpruned).c_str());
       result.screenshots.push_back(png);
     }
     if (options.panel) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      DrawPanel(options, session, stats, gpu, result.renderer);
+      DrawPanel(options, session, stats, gpu, result.renderer, drawing.Pruning(session.unpruned));
       ImGui::Render();
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
@@ -353,6 +417,7 @@ ViewerResult RunViewer(const ViewerOptions& options) {
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   drawing.tree.reset();
+  drawing.unpruned_tree.reset();
   drawing.scene_renderer.reset();
   glfwDestroyWindow(window);
   result.median_ms = Median(std::move(frame_ms));

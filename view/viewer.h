@@ -4,10 +4,11 @@
 //
 // Mouse: left drag turns the orbit, right drag pans, the wheel zooms. Keys: W A S D fly (on the
 // ground's plane), R reset, T level tint, L LOD rule (screen / planes), 0-9 force that octree level
-// (the same key again: automatic LOD), V the nearest input view alone or the two-view blend, P save
-// a screenshot, Escape quit. Pruning cannot be turned off here: a pruned billboard is not in the
-// asset (reconstruct --prune 1 builds an unpruned one to compare). A screenshot is the
-// window's pixels (without the panel) as PNG plus its camera as a COLMAP text model, so that
+// (the same key again: automatic LOD), V the nearest input view alone or the two-view blend, U
+// pruning off and on, P save a screenshot, Escape quit. A pruned billboard is not in the asset, so
+// pruning off draws a second asset of the same capture built without it (--unpruned FILE:
+// reconstruct --prune 1, then compress). A screenshot is the window's pixels (without the panel)
+// as PNG plus its camera as a COLMAP text model, so that
 // `voltree render ASSET --cameras DIR/view_000 --background 128,128,128` draws the same view.
 #pragma once
 
@@ -23,6 +24,7 @@ struct ViewerOptions {
   std::filesystem::path asset_folder;  // scenes: where their assets are (default: the scene's folder)
   int width = 1024, height = 768;      // window size
   std::array<float, 4> background = {128 / 255.0f, 128 / 255.0f, 128 / 255.0f, 1};  // opaque, eval's grey
+  std::filesystem::path unpruned;      // optional: the asset's capture built without pruning, drawn after U
   std::filesystem::path script;        // optional: scripted events (view/viewer_script.h); ends the session
   std::filesystem::path output = ".";  // where screenshots go: view_NNN.png and view_NNN/ (COLMAP model)
   bool panel = true;                   // the ImGui panel

@@ -2,7 +2,8 @@
 //   SECONDS ACTION [ARGS]     e.g.  0.5 drag 40 -10   |  1 key T  |  1.2 screenshot  |  2 quit
 // ACTION: drag DX DY (turn, pixels), pan DX DY, scroll STEPS, key K (a key as typed: T, L, V, R,
 // 0-9, W, A, S, D, P), screenshot, quit. '#' starts a comment. Times are seconds from the first frame,
-// non-decreasing; events run in order once their time has come.
+// non-decreasing; events run in order once their time has come, and a screenshot holds the
+// events after it until it is taken (once the LOD choice at its camera has settled).
 #pragma once
 
 #include <filesystem>

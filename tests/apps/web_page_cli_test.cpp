@@ -42,16 +42,6 @@ std::string Chromium(const std::string& action, const std::string& url, int widt
          "' 2>/dev/null";
 }
 
-std::string Capture(const std::string& command) {
-  std::string output;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return output;
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0;) output.append(buffer, n);
-  ::pclose(pipe);
-  return output;
-}
-
 // The URL form of a camera: cameras.txt's PINHOLE parameters, then images.txt's pose.
 std::string CameraParameter(const View& view) {
   const Eigen::Quaterniond& q = view.pose.rotation;
@@ -115,7 +105,7 @@ class WebPage : public test::TinyAssetSuite {
   }
 
   static std::string Dom(const fs::path& page, const std::string& query) {
-    return Capture(Chromium("--dump-dom", Url(page, query)));
+    return test::Shell(Chromium("--dump-dom", Url(page, query))).output;
   }
 
   static double Psnr(const Image8& a, const Image8& b) {

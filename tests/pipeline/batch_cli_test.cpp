@@ -99,6 +99,11 @@ TEST_F(BatchCli, BuildsEveryCaptureResumesAndRebuildsOnlyWhatIsMissing) {
   EXPECT_EQ(Voltree("render '" + (root / "scene.json").string() + "' --orbit 1 --size 64x64 --quiet -o '" +
                     (root / "frames").string() + "' > /dev/null"),
             0);
+  // And the web page shows it: the three assets, one instance each.
+  const Outcome page =
+      VoltreeCaptured("web '" + (root / "scene.json").string() + "' -o '" + (root / "web").string() + "'");
+  EXPECT_EQ(page.status, 0) << page.output;
+  EXPECT_TRUE(Has(page.output, "3 assets, 3 instances")) << page.output;
 
   // Again: nothing to do, nothing rewritten.
   const auto built = AssetTimes(root);
@@ -183,6 +188,26 @@ TEST_F(BatchCli, DryRunPrintsThePlannedJobsAndRunsNothing) {
   ASSERT_EQ(slurm.status, 0) << slurm.output;
   EXPECT_TRUE(Has(slurm.output, "reconstruct        3")) << slurm.output;
   EXPECT_FALSE(fs::exists(root / ".voltree-batch" / "slurm"));
+}
+
+// docs/batch.md's direct command: the Snakefile under the real `snakemake -n`, two of the three
+// captures chosen by the config, the studio's mattes and cameras kept; nothing is built.
+TEST_F(BatchCli, TheDocumentedSnakemakeCommandDryRuns) {
+  const fs::path root = Root("direct", kTrees);
+  const std::string command = "snakemake -n --snakefile '" + std::string(VOLTREE_SOURCE_DIR) +
+                              "/workflows/Snakefile' --directory '" + root.string() +
+                              "' -j 2 --config voltree=" + VOLTREE_BINARY + " 'captures=[oak, pine]' 2>&1";
+  const auto [status, output] = test::Shell(command);
+  EXPECT_EQ(status, 0) << output;
+  for (const char* rule :
+       {"reconstruct        2", "compress           2", "eval               2", "scene              1"})
+    EXPECT_TRUE(Has(output, rule)) << rule << "\n" << output;
+  EXPECT_FALSE(Has(output, "\nmatte ")) << output;
+  EXPECT_FALSE(Has(output, "\ncalibrate ")) << output;
+  EXPECT_FALSE(Has(output, "tree=young-oak")) << output;
+  EXPECT_TRUE(Has(output, "This was a dry-run")) << output;
+  EXPECT_TRUE(AssetTimes(root).empty());
+  EXPECT_FALSE(fs::exists(root / "oak" / "volume"));
 }
 
 TEST_F(BatchCli, BadInputGetsAClearMessage) {

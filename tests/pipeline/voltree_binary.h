@@ -21,13 +21,9 @@ struct Outcome {
   std::string output;  // stdout and stderr
 };
 
-// Runs the binary in `cwd` (empty: here) with `prefix` before it (e.g. a command that drops
-// privileges), capturing what it prints.
-inline Outcome VoltreeCaptured(const std::string& arguments, const std::string& cwd = "",
-                               const std::string& prefix = "") {
+// Runs a shell command, capturing what it prints (stdout; add 2>&1 for stderr).
+inline Outcome Shell(const std::string& command) {
   Outcome outcome;
-  const std::string command =
-      (cwd.empty() ? "" : "cd '" + cwd + "' && ") + prefix + "'" + VOLTREE_BINARY + "' " + arguments + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
   std::array<char, 4096> buffer;
@@ -35,6 +31,14 @@ inline Outcome VoltreeCaptured(const std::string& arguments, const std::string& 
   const int status = ::pclose(pipe);
   outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
+}
+
+// Runs the binary in `cwd` (empty: here) with `prefix` before it (e.g. a command that drops
+// privileges), capturing what it prints.
+inline Outcome VoltreeCaptured(const std::string& arguments, const std::string& cwd = "",
+                               const std::string& prefix = "") {
+  return Shell((cwd.empty() ? "" : "cd '" + cwd + "' && ") + prefix + "'" + VOLTREE_BINARY + "' " + arguments +
+               " 2>&1");
 }
 
 }  // namespace voltree::test
