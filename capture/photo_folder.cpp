@@ -16,7 +16,7 @@ bool IsPhotoFile(const fs::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
-  for (const char* known : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".exr"})
+  for (const char* known : kPhotoExtensions)
     if (extension == known) return true;
   return false;
 }

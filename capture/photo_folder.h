@@ -8,6 +8,9 @@
 
 namespace voltree {
 
+// The extensions of photo files (and of user mattes), lower case; matched in any case.
+inline constexpr const char* kPhotoExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".exr"};
+
 // The photo files in `folder` (PNG, JPEG, TIFF, BMP, EXR by extension, any case; not hidden),
 // sorted by name. Nothing when the folder is missing or holds none: for counting.
 std::vector<std::filesystem::path> FindPhotos(const std::filesystem::path& folder);

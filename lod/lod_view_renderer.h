@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "core/camera.h"
 #include "core/image.h"
 #include "render/box_filter.h"
+#include "render/fragment_counter.h"
 #include "render/framebuffer.h"
 #include "render/gl_context.h"
 #include "samples/studio_lighting.h"
@@ -40,7 +42,7 @@ class LodViewRenderer {
   using DrawCall = std::function<void(const View& view, const StudioLighting& lighting, double near, double far)>;
   LodFrame Render(const DrawCall& draw, const View& view, int supersample);
 
-  bool counts_fragments() const { return counts_fragments_; }
+  bool counts_fragments() const { return fragment_counter_.has_value(); }
   const GlContext& context() const { return context_; }
 
  private:
@@ -49,7 +51,7 @@ class LodViewRenderer {
   Eigen::Vector3d bounds_min_, bounds_max_;
   BoxDownsampler downsampler_;
   std::unique_ptr<Framebuffer> target_;
-  bool counts_fragments_ = false;
+  std::optional<FragmentCounter> fragment_counter_;  // where the driver can count fragments
 };
 
 }  // namespace voltree

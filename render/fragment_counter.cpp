@@ -22,21 +22,16 @@ bool FragmentCounter::Available() {
   return false;
 }
 
-FragmentCounter::FragmentCounter() {
-  glGenQueries(1, &query_);
+FragmentCounter::FragmentCounter() : query_(GlQueryName::Create()) {
   CheckGl("render: making a fragment counting query");
 }
 
-FragmentCounter::~FragmentCounter() {
-  if (query_) glDeleteQueries(1, &query_);
-}
-
-void FragmentCounter::Begin() { glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query_); }
+void FragmentCounter::Begin() { glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query_.id()); }
 
 uint64_t FragmentCounter::End() {
   glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
   GLuint64 fragments = 0;
-  glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &fragments);
+  glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &fragments);
   CheckGl("render: counting fragments");
   return uint64_t(fragments);
 }

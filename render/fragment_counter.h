@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "render/gl_objects.h"
+
 namespace voltree {
 
 class FragmentCounter {
@@ -14,16 +16,13 @@ class FragmentCounter {
   static bool Available();
 
   FragmentCounter();
-  ~FragmentCounter();
-  FragmentCounter(const FragmentCounter&) = delete;
-  FragmentCounter& operator=(const FragmentCounter&) = delete;
 
   void Begin();
   // Ends the query and waits for its result.
   uint64_t End();
 
  private:
-  unsigned query_ = 0;
+  GlQueryName query_;
 };
 
 }  // namespace voltree

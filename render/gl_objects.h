@@ -1,4 +1,5 @@
-// Owners for OpenGL object names (buffers, vertex arrays, textures, framebuffers, renderbuffers):
+// Owners for OpenGL object names (buffers, vertex arrays, textures, framebuffers, renderbuffers,
+// queries):
 // each name is deleted once, by its owner, also when a constructor throws half way through.
 // Owners are movable, not copyable.
 #pragma once
@@ -44,6 +45,8 @@ using GlVertexArrayName = GlName<glCreateVertexArrays, glDeleteVertexArrays>;
 using GlTextureName = GlName<CreateTextures2d, glDeleteTextures>;
 using GlFramebufferName = GlName<glCreateFramebuffers, glDeleteFramebuffers>;
 using GlRenderbufferName = GlName<glCreateRenderbuffers, glDeleteRenderbuffers>;
+// glGenQueries: a query's target is fixed by its first glBeginQuery, not at creation.
+using GlQueryName = GlName<glGenQueries, glDeleteQueries>;
 
 class GlBuffer {
  public:

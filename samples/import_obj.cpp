@@ -3,6 +3,9 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -29,6 +32,27 @@ struct CornerHash {
            size_t(uint32_t(c.normal));
   }
 };
+
+// tinyobjloader reads a coordinate it cannot parse ("nan", "inf", "1,5") as 0 without a word, so
+// the vertex lines are checked first: each of x, y, z must be a whole, finite number.
+void CheckVertexNumbers(const fs::path& path) {
+  std::ifstream in(path);
+  int vertex = 0;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+    ++vertex;
+    std::istringstream tokens(line.substr(2));
+    std::string token;
+    for (int axis = 0; axis < 3 && tokens >> token; ++axis) {
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      if (*end != '\0' || !std::isfinite(value))
+        Fail(path.string(), ":", number, ": vertex ", vertex, " has a coordinate '", token,
+             "' that is not a finite number");
+    }
+  }
+}
 
 class ObjImporter {
  public:
@@ -184,6 +208,7 @@ class ObjImporter {
 }  // namespace
 
 TreeMesh ImportObj(const fs::path& path, std::vector<std::string>* warnings) {
+  CheckVertexNumbers(path);
   return ObjImporter(path, warnings).Run();
 }
 

@@ -23,8 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kImageExtensions[] = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".exr"};
-
 // One photo: its matte (computed or the user's) and its premultiplied foreground.
 struct MatteOutputs {
   Image8 alpha, foreground;
@@ -66,7 +64,7 @@ void MatteWorkspaceOptions::Check() const {
 
 fs::path FindUserMatte(const fs::path& mattes_dir, const fs::path& photo) {
   const std::string stem = photo.stem().string();
-  for (const char* extension : kImageExtensions) {
+  for (const char* extension : kPhotoExtensions) {
     std::string upper = extension;
     std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return char(std::toupper(c)); });
     for (const std::string& candidate : {stem + extension, stem + upper})

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/crc32.h"
 #include "core/error.h"
 #include "core/files.h"
@@ -220,6 +222,31 @@ const std::vector<BadInputCase>& Cases() {
        [](const fs::path& d) { WriteFileAtomic(d / "file", "a file, not a folder\n"); },
        1,
        {"file/out", "Not a directory"}},
+      {"a scene instance at 1e308",
+       "render scene.json --orbit 1 -o frames",
+       [](const fs::path& d) {
+         WriteFileAtomic(d / "scene.json", R"({"assets": {"oak": "oak.vtree"},)"
+                                           R"( "instances": [{"asset": "oak", "position": [1e308, 0, 0]}]})"
+                                           "\n");
+       },
+       1,
+       {"scene.json", "instances[0].position", "within +-1e9"}},
+      {"scene bounds of 1e-30",
+       "reconstruct ws --force --quiet",
+       [](const fs::path& d) {
+         MakeTinyDemo(d / "ws");
+         nlohmann::json scene = nlohmann::json::parse(ReadFile(d / "ws" / "scene.json"));
+         scene["bounds_min"] = {1e-30, 1e-30, 1e-30};
+         scene["bounds_max"] = {2e-30, 2e-30, 2e-30};
+         WriteFileAtomic(d / "ws" / "scene.json", scene.dump(2) + "\n");
+       },
+       1,
+       {"scene bounds", "smaller than one pixel in every view", "scene.json"}},
+      {"a mesh with a vertex that is not a number",
+       "synth --tree tree.obj --views 1 --rings 1 --held-out 0 --size 32x32 -o out",
+       [](const fs::path& d) { WriteFileAtomic(d / "tree.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 1\nf 1 2 3\n"); },
+       1,
+       {"tree.obj:3", "vertex 3", "'nan'", "not a finite number"}},
   };
   return cases;
 }

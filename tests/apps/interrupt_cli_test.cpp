@@ -1,6 +1,7 @@
-// Ctrl-C and SIGTERM through the real binary: an interrupted command leaves no staging folder
-// (".X.partial-PID") and no output, and ends as the signal says; staging folders left by a
-// process that was killed outright are removed by the next run.
+// Ctrl-C and SIGTERM through the real binary: an interrupted command (synth, matte, render) leaves
+// no staging folder (".X.partial-PID") and no output, the user's files byte-identical, and ends as
+// the signal says; staging folders left by a process that was killed outright are removed by the
+// next run.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -11,6 +12,7 @@
 #include <cstdlib>
 #include <random>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -80,6 +82,14 @@ std::vector<std::string> StagingLeftovers(const fs::path& root) {
   return found;
 }
 
+// Every file under `root` with its bytes: what the user had before the interrupted command.
+std::map<std::string, std::string> Contents(const fs::path& root) {
+  std::map<std::string, std::string> contents;
+  for (const auto& entry : fs::recursive_directory_iterator(root))
+    if (entry.is_regular_file()) contents[entry.path().lexically_relative(root).string()] = ReadFile(entry.path());
+  return contents;
+}
+
 class Interrupt : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -127,8 +137,21 @@ TEST_F(Interrupt, SigtermDuringMatteLeavesThePhotosAndNothingElse) {
         photo.at(x, y, c) = uint8_t((tree ? (c == 1 ? 110 : 50) : (c == 2 ? 230 : 170)) + random() % 40);
     }
   for (int i = 0; i < 8; ++i) WriteImage(dir_ / "ws" / "images" / Str("v", i, ".png"), photo);
+  const auto photos = Contents(dir_ / "ws");
   InterruptMidway("matte ws --threads 1 --refine infoflow", "ws/mattes", SIGTERM);
-  EXPECT_EQ(FilesUnder(dir_ / "ws"), 8u) << "only the photos should remain";
+  EXPECT_TRUE(Contents(dir_ / "ws") == photos) << "only the photos should remain, unchanged";
+}
+
+TEST_F(Interrupt, CtrlCDuringRenderLeavesTheAssetAndNothingElse) {
+  const pid_t demo = SpawnVoltree(
+      "demo --tree young-oak --views 4 --held-out 1 --size 32x32 --levels 3 --orbit 0 --no-eval --quiet -o ws", dir_);
+  int status = 0;
+  ::waitpid(demo, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << ReadFile(dir_ / "log.txt");
+  const auto workspace = Contents(dir_ / "ws");
+  InterruptMidway("render ws/tree.vtree --orbit 2000 -o frames", "frames", SIGINT);
+  EXPECT_FALSE(fs::exists(dir_ / "frames"));
+  EXPECT_TRUE(Contents(dir_ / "ws") == workspace) << "the workspace changed";
 }
 
 TEST_F(Interrupt, StagingOfADeadProcessIsRemovedByTheNextRun) {

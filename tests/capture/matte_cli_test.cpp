@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "core/srgb.h"
 #include "samples/matte_scene.h"
 #include "pipeline/voltree_binary.h"
 
@@ -59,6 +60,18 @@ TEST_F(MatteCliTest, MattesAWorkspaceAndRefusesToOverwrite) {
   EXPECT_NE(outcome.status, 0);
   EXPECT_NE(outcome.output.find("--refine 'magic': expected one of infoflow, guided, none"), std::string::npos)
       << outcome.output;
+}
+
+// EXR photos (linear light, as the README lists them) are read as sRGB and matted like PNGs.
+TEST_F(MatteCliTest, MattesAnExrPhoto) {
+  const MatteScene scene = MakeMatteScene(160, 128, 5);
+  ImageF linear(scene.photo.width, scene.photo.height, 3);
+  for (size_t i = 0; i < linear.pixels.size(); ++i) linear.pixels[i] = SrgbToLinear(scene.photo.pixels[i] / 255.0f);
+  const fs::path workspace = dir_ / "ws";
+  WriteImage(workspace / "images" / "view_000.exr", linear);
+  const test::Outcome outcome = Run(Str("matte '", workspace.string(), "' --refine guided --quiet"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  EXPECT_LT(CompareMattes(ReadImage8(workspace / "mattes" / "view_000.png"), scene.alpha).mse, 1.5);
 }
 
 TEST_F(MatteCliTest, ImportsUserMattes) {

@@ -51,6 +51,8 @@ TEST_F(DemoCli, SameAssetFromAnyStagingFolder) {
   EXPECT_EQ(ReadFile(root_ / "a" / "demo" / "report" / "notes.txt"), "mine\n");
   EXPECT_TRUE(ReadFile(root_ / "a" / "demo" / "tree.vtree") == first);
   EXPECT_TRUE(fs::exists(root_ / "a" / "demo" / ".voltree-demo"));
+  for (const auto& entry : fs::recursive_directory_iterator(root_))
+    EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << "left: " << entry.path();
 }
 
 TEST_F(DemoCli, RefusesAFolderThatIsNotADemo) {

@@ -114,25 +114,12 @@ inline ReconstructInput PhantomInput(const Phantom& p, int views, int size) {
 }  // namespace voltree::testing
 
 #include <algorithm>
-#include <filesystem>
-#include <unistd.h>
 
 #include "reconstruct/billboards.h"
 #include "reconstruct/grid.h"
+#include "temp_dir.h"
 
 namespace voltree::testing {
-
-// A fresh empty folder under the system temp folder, removed by the destructor.
-struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() /
-             ("voltree_reconstruct_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
 
 // Alpha of one level of the volume's densities along a ray: 1 - exp(-sum sigma l).
 inline double LevelAlong(const Volume& volume, int level, const Ray& ray) {

@@ -33,6 +33,20 @@ TEST(GlObjects, NamesAreDeletedOnceAndHandedOverByMoves) {
   EXPECT_FALSE(glIsBuffer(id));
 }
 
+TEST(GlObjects, QueryNamesAreDeletedByTheirOwner) {
+  GlContext context;
+  GLuint id = 0;
+  {
+    const GlQueryName query = GlQueryName::Create();
+    id = query.id();
+    ASSERT_NE(id, 0u);
+    glBeginQuery(GL_SAMPLES_PASSED, id);  // a generated name becomes a query object when first begun
+    glEndQuery(GL_SAMPLES_PASSED);
+    EXPECT_TRUE(glIsQuery(id));
+  }
+  EXPECT_FALSE(glIsQuery(id));
+}
+
 TEST(GlObjects, BufferHoldsTheDataPaddedWithZeros) {
   GlContext context;
   const std::array<uint32_t, 2> data = {7, 9};

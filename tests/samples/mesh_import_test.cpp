@@ -521,6 +521,19 @@ TEST_F(MeshImportTest, ObjOutOfRangeIndexIsAnError) {
   ExpectErrorMentioningPath(path);
 }
 
+// tinyobjloader reads these as 0; the importer names the line instead.
+TEST_F(MeshImportTest, ObjCoordinateThatIsNotAFiniteNumberIsAnError) {
+  for (const char* bad : {"nan", "-inf", "1,5", "1e999"}) {
+    const std::string message =
+        ExpectErrorMentioningPath(Write("bad.obj", Str("v 0 0 0\nv 1 0 0\nv 0 ", bad, " 1\nf 1 2 3\n")));
+    EXPECT_NE(message.find("bad.obj:3: vertex 3 has a coordinate '" + std::string(bad) + "'"), std::string::npos)
+        << message;
+  }
+  // Windows line endings, tabs, a w component and a comment are still numbers.
+  const TreeMesh mesh = Import(Write("crlf.obj", "v 0 0 0 1\r\nv\t1 0 0 # x\r\nv 0 0 1\r\nf 1 2 3\r\n"));
+  EXPECT_EQ(mesh.TriangleCount(), 1u);
+}
+
 TEST_F(MeshImportTest, BadFilesAreErrorsNamingThePath) {
   ExpectErrorMentioningPath(dir_ / "absent.gltf");
   ExpectErrorMentioningPath(Write("empty.gltf", ""));

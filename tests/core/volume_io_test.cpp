@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/volume_io.h"
-#include "synthetic_scene.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
