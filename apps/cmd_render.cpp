@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/vtree.h"
+#include "lod/mesh_scene_job.h"
 #include "render/scene.h"
 #include "render/tree_renderer_job.h"
 
@@ -37,12 +38,49 @@ void CheckRenderLevel(const std::filesystem::path& asset, int level, int max_lev
     Fail("--level ", level, ": ", asset.string(), " has levels 0..", levels - 1, why, "; expected one of them");
 }
 
+struct RenderArguments {
+  RenderJobOptions job;
+  MeshLodOptions lod;     // with mesh_lod: the method that draws a scene's meshes
+  bool mesh_lod = false;  // --lod named a mesh LOD method rather than a rule for assets
+  bool quiet = false;
+};
+
+// --lod: a rule of the asset renderer (screen, planes) or a mesh LOD method (lod-bench's names).
+void ParseRenderLod(const std::string& text, RenderArguments& args) {
+  if (const std::optional<MeshLodMethod> method = MeshLodMethodFromName(text)) {
+    args.lod.method = *method;
+    args.mesh_lod = true;
+    return;
+  }
+  if (text != "screen" && text != "planes")
+    Fail("--lod '", text, "': expected a rule for .vtree assets (screen, planes) or, for a scene's meshes, a method (",
+         MeshLodMethodList(), ")");
+  args.job.render.lod.rule = LodRuleFromName(text);
+  args.mesh_lod = false;
+}
+
+// What a frame of meshes drew, averaged over the frames.
+void PrintMeshCounts(const std::vector<MeshFrameCounts>& counts) {
+  double triangles = 0, points = 0, lines = 0, ellipsoids = 0, full = 0, reduced = 0;
+  for (const MeshFrameCounts& c : counts) {
+    triangles += double(c.triangles), points += double(c.points), lines += double(c.lines);
+    ellipsoids += double(c.ellipsoids), full += double(c.full_instances), reduced += double(c.reduced_instances);
+  }
+  const double n = double(std::max<size_t>(counts.size(), 1));
+  std::printf(
+      "per frame: %.0f triangles, %.0f points, %.0f lines, %.0f ellipsoids; instances %.1f full, %.1f reduced\n",
+      triangles / n, points / n, lines / n, ellipsoids / n, full / n, reduced / n);
+}
+
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {
   for (const std::string& note : result.notes) std::fprintf(stderr, "%s\n", note.c_str());
   const std::string output = job.output.string(), turntable = job.turntable.string();
   const std::string where = output.empty() ? turntable : turntable.empty() ? output : output + " and " + turntable;
   std::printf("%zu frames -> %s (%s)\n", result.frames.size(), where.c_str(), result.renderer.c_str());
-  std::printf("median %.2f ms per frame, %.0f billboards per frame\n", result.median_ms, result.mean_billboards);
+  if (result.mesh_counts.empty())
+    std::printf("median %.2f ms per frame, %.0f billboards per frame\n", result.median_ms, result.mean_billboards);
+  else
+    std::printf("median %.2f ms per frame\n", result.median_ms), PrintMeshCounts(result.mesh_counts);
   if (IsSceneFile(job.asset))
     std::printf("instances per frame: %.1f drawn, %.1f culled\n", result.mean_instances_drawn,
                 result.mean_instances_culled);
@@ -67,11 +105,7 @@ void AddRenderCommand(CLI::App& app) {
       "octree "
       "traversal, LOD; scenes: ground plane, frustum culling, instances back to front) into straight-alpha RGBA PNGs "
       "and/or an .mp4 turntable; prints the median ms per frame, billboards per frame and GPU memory");
-  struct Arguments {
-    RenderJobOptions job;
-    bool quiet = false;
-  };
-  auto args = std::make_shared<Arguments>();
+  auto args = std::make_shared<RenderArguments>();
   RenderJobOptions& o = args->job;
   command->add_option("ASSET", o.asset, "A .vtree asset, or a scene .json (see samples/scenes/README.md)")->required();
   AddOption(*command, "--assets", o.asset_folder);
@@ -84,6 +118,10 @@ void AddRenderCommand(CLI::App& app) {
       },
       "");
   AddRenderOptions(*command, o.render);
+  AddParsedOption<RenderArguments>(*command, "--lod", *args, ParseRenderLod, "screen");
+  AddOption(*command, "--full-pixels", args->lod.full_pixels);
+  AddOption(*command, "--min-lambda", args->lod.min_lambda);
+  AddOption(*command, "--prune-seed", args->lod.seed);
   AddOption(*command, "--max-level", o.max_level);
   AddFlag(*command, "--stats", o.render.count_fragments);
   AddOption(*command, "--output", o.output, "Output folder (built aside, renamed into place)");
@@ -99,6 +137,13 @@ void AddRenderCommand(CLI::App& app) {
       CheckRenderLevel(job.asset, job.render.lod.forced_level, job.max_level);
     if (orbit->count() == 0 && job.cameras.empty()) job.orbit = 36;
     Progress progress(args->quiet);
+    if (args->mesh_lod) {
+      if (command->get_option("--level")->count() > 0)
+        Fail("--level picks an octree level of .vtree assets; --lod ", MeshLodMethodName(args->lod.method),
+             " draws meshes");
+      PrintRenderResult(job, RunMeshSceneRenderJob(job, args->lod, &progress));
+      return;
+    }
     PrintRenderResult(job, RunRenderJob(job, &progress));
   });
 }

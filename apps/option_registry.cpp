@@ -214,8 +214,15 @@ std::vector<OptionSpec> RenderFlags() {
        "Load the asset's levels 0..K only (progressive: what the first bytes of the file draw); beyond the asset's "
        "finest level: all, with a note (default: all)"},
       {"--lod",
-       {"LodOptions.rule"},
-       "LOD rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along the view direction)"},
+       {"LodOptions.rule", "MeshLodOptions.method"},
+       "LOD of .vtree assets, the rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along "
+       "the view direction); of a scene's meshes (its meshes field), lod-bench's method per instance at the level "
+       "its screen size picks: mesh (the full mesh), points (Deussen 2002), ellipsoids (Clasen) or cook "
+       "(stochastic pruning), the full mesh where the tree is near"},
+      {"--full-pixels",
+       {"MeshLodOptions.full_pixels"},
+       "--lod cook and ellipsoids: trees at least this many pixels tall on screen are drawn as the full mesh; "
+       "cook keeps lambda = (height / this)^2 of the leaves below it"},
       {"--texel-pixels",
        {"LodOptions.max_texel_pixels"},
        "LOD: descend while a billboard texel covers more pixels than this"},
@@ -329,9 +336,11 @@ std::vector<OptionSpec> LodBenchFlags() {
        "Comma-separated screen sizes: the tree framed as in the studio's photos, in an image this many pixels tall "
        "(8 to the frame's height, --size)"},
       {"--min-lambda",
-       {"LodBenchOptions.min_lambda"},
+       {"LodBenchOptions.min_lambda", "MeshLodOptions.min_lambda"},
        "The smallest fraction of leaves a size keeps, in (0, 1]; lambda = max(this, (size / frame)^2)"},
-      {"--prune-seed", {"LodBenchOptions.seed"}, "Seed of the leaves' random pruning order"},
+      {"--prune-seed",
+       {"LodBenchOptions.seed", "MeshLodOptions.seed"},
+       "Seed of the leaves' random pruning order (render --lod: also of the points' sampling and the EM start)"},
       {"--priority",
        {"RenderingPriorityOptions.terms"},
        "Neubert's rendering priority for the neubert-priority, -matched and -colour rows: combined (silhouette^2 + "

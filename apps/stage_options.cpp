@@ -143,7 +143,6 @@ void AddEvaluateOptions(CLI::App& command, EvaluateOptions& evaluate) {
 
 void AddRenderOptions(CLI::App& command, TreeRenderOptions& render) {
   AddOption(command, "--level", render.lod.forced_level);
-  AddChoice(command, "--lod", render.lod.rule, {{"screen", LodRule::kScreen}, {"planes", LodRule::kPlanes}});
   AddOption(command, "--texel-pixels", render.lod.max_texel_pixels);
   AddFlag(command, "--tint-levels", render.tint_levels);
   AddBackgroundOption(command, render.background);

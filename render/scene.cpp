@@ -103,22 +103,66 @@ SceneGround ParseGround(const Checker& check, const Json& j) {
   return ground;
 }
 
-SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index,
-                            const std::vector<SceneAssetRef>& assets) {
+SceneMeshRef ParseMesh(const Checker& check, const std::string& name, const Json& j,
+                       const std::filesystem::path& folder) {
+  const std::string field = "meshes." + name;
+  if (name.empty()) check.Wrong("meshes", "has an empty mesh name");
+  SceneMeshRef mesh;
+  mesh.name = name;
+  const Json* tree = &j;
+  if (j.is_object()) {
+    check.KnownKeys(j, field, {"seed", "tree", "up"});
+    tree = &check.Required(j, "tree", field);
+    if (j.contains("up")) {
+      mesh.up = j["up"].is_string() ? j["up"].get<std::string>() : "";
+      if (mesh.up != "y" && mesh.up != "z") check.Wrong(field + ".up", "must be \"y\" or \"z\", got ", j["up"].dump());
+    }
+    if (j.contains("seed")) {
+      if (!j["seed"].is_number_unsigned())
+        check.Wrong(field + ".seed", "must be an integer >= 0, got ", j["seed"].dump());
+      mesh.seed = j["seed"].get<uint64_t>();
+    }
+  }
+  if (!tree->is_string() || tree->get<std::string>().empty())
+    check.Wrong(j.is_object() ? field + ".tree" : field, "must be a preset name or a .gltf, .glb or .obj path, got ",
+                tree->dump());
+  mesh.tree = tree->get<std::string>();
+  const std::filesystem::path path = mesh.tree;
+  mesh.path = path.is_absolute() ? path : folder / path;
+  return mesh;
+}
+
+std::vector<SceneMeshRef> ParseMeshes(const Checker& check, const Json& j, const std::filesystem::path& folder) {
+  check.Object(j, "meshes");
+  std::vector<SceneMeshRef> meshes;
+  for (const auto& [name, value] : j.items()) meshes.push_back(ParseMesh(check, name, value, folder));
+  return meshes;
+}
+
+// The index of the entry called `name`, or -1.
+template <typename Ref>
+int IndexOf(const std::vector<Ref>& refs, const std::string& name) {
+  const auto found = std::find_if(refs.begin(), refs.end(), [&](const Ref& r) { return r.name == name; });
+  return found == refs.end() ? -1 : int(found - refs.begin());
+}
+
+SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index, const Scene& scene) {
   const std::string field = Str("instances[", index, "]");
   check.Object(j, field);
   check.KnownKeys(j, field, {"asset", "position", "rotation", "scale"});
   SceneInstance instance;
   const Json& asset = check.Required(j, "asset", field);
   if (!asset.is_string()) check.Wrong(field + ".asset", "must be an asset name, got ", asset.dump());
-  const auto found = std::find_if(assets.begin(), assets.end(),
-                                  [&](const SceneAssetRef& a) { return a.name == asset.get<std::string>(); });
-  if (found == assets.end()) {
+  instance.asset = IndexOf(scene.assets, asset.get<std::string>());
+  instance.mesh = IndexOf(scene.meshes, asset.get<std::string>());
+  if (instance.asset < 0 && instance.mesh < 0) {
     std::vector<std::string> names;
-    for (const SceneAssetRef& a : assets) names.push_back(a.name);
-    check.Wrong(field + ".asset", asset.dump(), " is not one of the assets (", Checker::Joined(names), ")");
+    for (const SceneAssetRef& a : scene.assets) names.push_back(a.name);
+    for (const SceneMeshRef& m : scene.meshes)
+      if (IndexOf(scene.assets, m.name) < 0) names.push_back(m.name);
+    check.Wrong(field + ".asset", asset.dump(), " is not one of the ",
+                scene.meshes.empty() ? "assets" : "assets or meshes", " (", Checker::Joined(names), ")");
   }
-  instance.asset = int(found - assets.begin());
   const std::vector<double> p = check.Numbers(check.Required(j, "position", field), field + ".position", 3);
   // Far beyond any landscape, and where cameras and depth ranges computed from it overflow.
   constexpr double kLargest = 1e9;
@@ -133,6 +177,20 @@ SceneInstance ParseInstance(const Checker& check, const Json& j, size_t index,
       check.Wrong(field + ".scale", "must be > 0 and at most 1e9, got ", j["scale"].dump());
   }
   return instance;
+}
+
+// Every instance has what will be drawn: a mesh (`meshes`) or an asset.
+void CheckInstancesDrawable(const Scene& scene, bool meshes) {
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const SceneInstance& instance = scene.instances[i];
+    if (meshes && instance.mesh < 0)
+      Fail(scene.name, ": instances[", i, "].asset \"", scene.assets[instance.asset].name,
+           "\" has no mesh: a mesh LOD method draws the trees named in meshes");
+    if (!meshes && instance.asset < 0)
+      Fail(scene.name, ": instances[", i, "].asset \"", scene.meshes[instance.mesh].name,
+           "\" is a mesh without a .vtree asset: draw it with a mesh LOD method (render --lod mesh, points, "
+           "ellipsoids or cook)");
+  }
 }
 
 }  // namespace
@@ -153,15 +211,16 @@ Scene ParseScene(std::string_view text, const std::string& name, const std::file
     Fail(name, ": not valid JSON: ", error.what());
   }
   if (!j.is_object()) Fail(name, ": a scene must be a JSON object, got ", j.type_name());
-  check.KnownKeys(j, "", {"assets", "ground", "instances"});
+  check.KnownKeys(j, "", {"assets", "ground", "instances", "meshes"});
   Scene scene;
   scene.name = name;
-  scene.assets = ParseAssets(check, check.Required(j, "assets", ""), asset_folder);
+  if (j.contains("meshes")) scene.meshes = ParseMeshes(check, j["meshes"], asset_folder);
+  if (scene.meshes.empty() || j.contains("assets"))
+    scene.assets = ParseAssets(check, check.Required(j, "assets", ""), asset_folder);
   if (j.contains("ground")) scene.ground = ParseGround(check, j["ground"]);
   const Json& instances = check.Required(j, "instances", "");
   if (!instances.is_array()) check.Wrong("instances", "must be an array, got ", instances.type_name());
-  for (size_t i = 0; i < instances.size(); ++i)
-    scene.instances.push_back(ParseInstance(check, instances[i], i, scene.assets));
+  for (size_t i = 0; i < instances.size(); ++i) scene.instances.push_back(ParseInstance(check, instances[i], i, scene));
   return scene;
 }
 
@@ -169,6 +228,8 @@ Scene LoadScene(const std::filesystem::path& file, const SceneLoadOptions& optio
   if (!std::filesystem::is_regular_file(file)) Fail(file.string(), ": scene file not found");
   const std::filesystem::path folder = options.asset_folder.empty() ? file.parent_path() : options.asset_folder;
   Scene scene = ParseScene(ReadFile(file), file.string(), folder);
+  CheckInstancesDrawable(scene, options.meshes);
+  if (options.meshes) return scene;
   std::vector<std::string> missing;
   for (const SceneAssetRef& asset : scene.assets)
     if (!std::filesystem::is_regular_file(asset.path))

@@ -1,4 +1,5 @@
-// Scenes: many instances of a few .vtree assets on a ground plane, read from JSON.
+// Scenes: many instances of a few trees on a ground plane, read from JSON. A tree is a .vtree
+// asset, a mesh (a preset or a mesh file, drawn by `render --lod METHOD`), or both under one name.
 //
 //   {
 //     "assets": {"oak": "oak.vtree", "pine": "trees/pine.vtree"},
@@ -10,9 +11,13 @@
 //   }
 //
 // assets: name -> .vtree path, relative to the scene file's folder (or to an override folder).
+// meshes (optional): name -> the tree as a mesh, for the mesh LOD methods: a preset name or a
+// .gltf/.glb/.obj path (relative like the assets), or {"tree": ..., "up": "y"|"z", "seed": N}.
+// A name in both is one tree, captured (the asset) and modelled (the mesh). At least one of
+// assets and meshes names a tree.
 // ground (optional): a square (size: number) or rectangle (size: [x, y]) on z = 0 centred at
 // `centre` ([x, y], default [0, 0]), opaque sRGB colour 0..255.
-// instances: asset name, position [x, y, z] of the asset's origin (the base of the trunk),
+// instances: asset (a name in assets or meshes), position [x, y, z] of the asset's origin (the base of the trunk),
 // rotation about +Z in degrees (default 0), uniform scale > 0 (default 1).
 // Every field is checked; unknown keys are errors; messages name the file and the field.
 #pragma once
@@ -35,9 +40,19 @@ struct SceneAssetRef {
   std::filesystem::path path;  // resolved against the asset folder
 };
 
+// A tree as a mesh: which one is the lod layer's to say (render does not know the presets).
+struct SceneMeshRef {
+  std::string name;
+  std::string tree;            // as written: a preset name or a mesh file
+  std::filesystem::path path;  // `tree` resolved against the asset folder, for a mesh file
+  std::string up = "y";        // mesh files: the up axis, y or z
+  uint64_t seed = 1;           // presets: the seed they grow from
+};
+
 struct SceneInstance {
-  int asset = 0;  // index into Scene::assets
+  int asset = -1;  // index into Scene::assets; -1: the name is a mesh only
   InstanceTransform transform;
+  int mesh = -1;  // index into Scene::meshes; -1: the name is an asset only
 };
 
 struct SceneGround {
@@ -49,6 +64,7 @@ struct SceneGround {
 struct Scene {
   std::string name;                   // the file as the user named it; prefixes error messages
   std::vector<SceneAssetRef> assets;  // sorted by name
+  std::vector<SceneMeshRef> meshes;   // sorted by name
   std::vector<SceneInstance> instances;
   std::optional<SceneGround> ground;
 };
@@ -62,9 +78,13 @@ Scene ParseScene(std::string_view json, const std::string& name, const std::file
 
 struct SceneLoadOptions {
   std::filesystem::path asset_folder;  // empty: the scene file's folder
+  // What will be drawn: the meshes (every instance needs one; their files are the lod layer's to
+  // read) or the assets (every instance needs one, and the files must exist).
+  bool meshes = false;
 };
 
-// Reads and parses `file`, then checks that every asset file exists (naming the missing ones).
+// Reads and parses `file`, then checks that every instance has what will be drawn and that every
+// asset file exists (naming the missing ones).
 Scene LoadScene(const std::filesystem::path& file, const SceneLoadOptions& options = {});
 
 // Reads the scene's assets in Scene::assets order; errors name the scene and the asset.

@@ -13,27 +13,6 @@
 namespace voltree {
 namespace {
 
-// The ground: a grid of kGroundCells^2 quads generated from gl_VertexID (no buffers), fine enough
-// that per-vertex lens distortion bends it like the billboards.
-constexpr int kGroundCells = 32;
-
-constexpr const char* kGroundMain = R"(
-uniform vec2 uGroundMin, uGroundSize;
-uniform int uCells;
-void main() {
-  const ivec2 corners[6] = ivec2[6](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
-  int cell = gl_VertexID / 6;
-  ivec2 ij = ivec2(cell % uCells, cell / uCells) + corners[gl_VertexID % 6];
-  gl_Position = ProjectToClip(vec3(uGroundMin + uGroundSize * vec2(ij) / float(uCells), 0.0));
-}
-)";
-
-constexpr const char* kGroundFragment = R"(#version 430 core
-uniform vec3 uColour;
-out vec4 color;
-void main() { color = vec4(uColour, 1.0); }
-)";
-
 using Clock = std::chrono::steady_clock;
 double Ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
@@ -118,9 +97,6 @@ SceneRenderer::SceneRenderer(const Scene& scene, const std::vector<VtreeAsset>& 
     instance.transform.Check();
   }
   lod_states_.resize(scene.instances.size());
-  ground_program_ = ShaderProgram::Graphics(
-      "scene ground", std::string("#version 430 core\n") + kProjectionGlsl + kGroundMain, kGroundFragment);
-  CheckGl("render: creating the scene's ground");
 }
 
 std::vector<Sphere> SceneRenderer::InstanceSpheres(double billboard_scale) const {
@@ -134,11 +110,10 @@ std::vector<Sphere> SceneRenderer::InstanceSpheres(double billboard_scale) const
   return spheres;
 }
 
-Sphere SceneRenderer::Bounds(double billboard_scale) const {
-  const std::vector<Sphere> spheres = InstanceSpheres(billboard_scale);
+Sphere SceneSphere(const Scene& scene, const std::vector<Sphere>& spheres) {
   if (spheres.empty()) {
-    if (!scene_.ground) Fail(scene_.name, ": the scene has neither instances nor a ground to look at");
-    return {Eigen::Vector3d(scene_.ground->centre.x(), scene_.ground->centre.y(), 0), 0.5 * scene_.ground->size.norm()};
+    if (!scene.ground) Fail(scene.name, ": the scene has neither instances nor a ground to look at");
+    return {Eigen::Vector3d(scene.ground->centre.x(), scene.ground->centre.y(), 0), 0.5 * scene.ground->size.norm()};
   }
   Eigen::Vector3d lo = spheres[0].centre, hi = spheres[0].centre;
   for (const Sphere& s : spheres) {
@@ -148,6 +123,10 @@ Sphere SceneRenderer::Bounds(double billboard_scale) const {
   Sphere bounds{0.5 * (lo + hi), 0};
   for (const Sphere& s : spheres) bounds.radius = std::max(bounds.radius, (s.centre - bounds.centre).norm() + s.radius);
   return bounds;
+}
+
+Sphere SceneRenderer::Bounds(double billboard_scale) const {
+  return SceneSphere(scene_, InstanceSpheres(billboard_scale));
 }
 
 GpuMemory SceneRenderer::GpuBytes() const {
@@ -163,25 +142,6 @@ void SceneRenderer::ResetLodHistory() {
   for (auto& state : lod_states_) state.clear();
 }
 
-void SceneRenderer::DrawGround(const View& view, const DepthRange& depth) const {
-  const SceneGround& ground = *scene_.ground;
-  SetProjectionUniforms(ground_program_, view, depth);
-  ground_program_.Set("uGroundMin", Eigen::Vector2f((ground.centre - 0.5 * ground.size).cast<float>()));
-  ground_program_.Set("uGroundSize", Eigen::Vector2f(ground.size.cast<float>()));
-  ground_program_.Set("uCells", kGroundCells);
-  ground_program_.Set("uColour",
-                      Eigen::Vector3f(ground.colour[0] / 255.0f, ground.colour[1] / 255.0f, ground.colour[2] / 255.0f));
-  ground_program_.Use();
-  ground_vertex_array_.Bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);  // seen from below it is still the ground
-  glDrawArrays(GL_TRIANGLES, 0, 6 * kGroundCells * kGroundCells);
-  glBindVertexArray(0);
-}
-
 SceneFrameStats SceneRenderer::Draw(const View& view, const SceneRenderOptions& options) {
   options.Check();
   view.camera.Check();
@@ -194,7 +154,10 @@ SceneFrameStats SceneRenderer::Draw(const View& view, const SceneRenderOptions& 
   SceneFrameStats stats;
   stats.instances_drawn = order.size();
   stats.instances_culled = spheres.size() - order.size();
-  if (scene_.ground) DrawGround(view, depth);
+  if (scene_.ground) {
+    const auto& rgb = scene_.ground->colour;  // the target stores sRGB
+    ground_.Draw(view, depth, *scene_.ground, Eigen::Vector3f(rgb[0], rgb[1], rgb[2]) / 255.0f);
+  }
   for (size_t i : order) {
     const SceneInstance& instance = scene_.instances[i];
     TreeDraw draw;

@@ -11,12 +11,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/frustum.h"
+#include "render/ground_renderer.h"
 #include "render/gl_objects.h"
 #include "render/orbit.h"
 #include "render/projection.h"
@@ -32,8 +34,19 @@ struct SceneRenderOptions {
   void Check() const;
 };
 
+// Scenes of meshes drawn by a mesh LOD method (lod/mesh_scene_renderer.h): what a frame drew.
+struct MeshFrameCounts {
+  size_t triangles = 0;  // of the meshes drawn, the ellipsoids' surfaces and the lines' quads
+  size_t points = 0, lines = 0, ellipsoids = 0;
+  size_t full_instances = 0;      // drawn as the full mesh (near, or the method could not be built)
+  size_t reduced_instances = 0;   // drawn by the method at a reduced level
+  size_t occluded_instances = 0;  // neubert: drawn with fewer leaves because trees in front hide them
+  size_t Primitives() const { return triangles + points + lines + ellipsoids; }
+};
+
 struct SceneFrameStats {
   FrameStats trees;  // summed over the drawn instances (cells, billboards, traversal ms); level range over all
+  std::optional<MeshFrameCounts> mesh;  // scenes of meshes only
   size_t instances_drawn = 0, instances_culled = 0;
   double frame_ms = 0;  // culling, sorting, ground, every tree and glFinish (no read-back)
 };
@@ -45,6 +58,9 @@ std::vector<size_t> VisibleBackToFront(const std::vector<Sphere>& spheres, const
 // One depth range for a frame that holds the visible spheres and the ground rectangle (z = 0).
 DepthRange SceneDepthRange(const Eigen::Vector3d& eye, const std::vector<Sphere>& visible,
                            const std::optional<SceneGround>& ground);
+
+// A sphere around `spheres` (the instances'), or the ground's extent when there are none.
+Sphere SceneSphere(const Scene& scene, const std::vector<Sphere>& spheres);
 
 // The scene orbit of `voltree render SCENE --orbit N`: 25 degrees above the horizon at 1.7 times
 // the radius of `bounds` (the instances' sphere), looking at its centre, the sphere in view.
@@ -72,13 +88,10 @@ class SceneRenderer {
   Image8 Render(const View& view, const SceneRenderOptions& options, SceneFrameStats* stats = nullptr);
 
  private:
-  void DrawGround(const View& view, const DepthRange& depth) const;
-
   Scene scene_;
   std::vector<std::unique_ptr<TreeRenderer>> renderers_;  // per asset
   std::vector<std::vector<uint8_t>> lod_states_;          // per instance
-  ShaderProgram ground_program_;
-  GlVertexArray ground_vertex_array_;  // empty: the ground comes from gl_VertexID
+  GroundRenderer ground_;
   std::unique_ptr<Framebuffer> target_;
 };
 

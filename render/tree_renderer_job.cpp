@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "core/vtree.h"
 #include "render/gl_context.h"
+#include "render/frame_source.h"
 #include "render/orbit.h"
 #include "render/scene_renderer.h"
 #include "render/turntable.h"
@@ -74,15 +75,6 @@ std::vector<View> ModelCameras(const RenderJobOptions& options) {
   }
   return views;
 }
-
-// What the job draws: one asset or a scene, behind one interface.
-class FrameSource {
- public:
-  virtual ~FrameSource() = default;
-  virtual std::vector<View> Orbit(const OrbitOptions& orbit) const = 0;
-  virtual Image8 Render(const View& view, const TreeRenderOptions& options, SceneFrameStats* stats) = 0;
-  virtual GpuMemory GpuBytes() const = 0;
-};
 
 class AssetSource : public FrameSource {
  public:
@@ -148,7 +140,8 @@ double Median(std::vector<double> values) {
 
 }  // namespace
 
-RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress) {
+RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress,
+                             const MeshSceneSourceFactory& mesh_scene) {
   options.Check();
   // Refuse before slow work: existing outputs, a missing ffmpeg, a broken scene.
   if (!options.output.empty()) CheckCanWrite(options.output, options.force);
@@ -158,13 +151,17 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
       Fail("render: --turntable needs ffmpeg, which is not on PATH (Debian: apt-get install ffmpeg)");
   }
   std::optional<Scene> scene;
-  if (IsSceneFile(options.asset)) scene = LoadScene(options.asset, {options.asset_folder});
+  if (mesh_scene && !IsSceneFile(options.asset))
+    Fail("render: a mesh LOD method draws a scene (.json) of meshes, not ", options.asset.string());
+  if (IsSceneFile(options.asset)) scene = LoadScene(options.asset, {options.asset_folder, bool(mesh_scene)});
   const std::vector<View> model_cameras = options.cameras.empty() ? std::vector<View>{} : ModelCameras(options);
 
   GlContext context;
   std::vector<std::string> notes;
   std::unique_ptr<FrameSource> source;
-  if (scene) {
+  if (scene && mesh_scene) {
+    source = mesh_scene(*scene);
+  } else if (scene) {
     source = std::make_unique<SceneSource>(*scene, options.render.billboard_scale);
   } else {
     source = std::make_unique<AssetSource>(options.asset, options.max_level, &notes);
@@ -184,6 +181,7 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
   RenderJobResult result;
   result.renderer = context.renderer();
   result.notes = notes;
+  for (const std::string& note : source->Notes()) result.notes.push_back(note);
   nlohmann::json frames = nlohmann::json::array();
   double drawn = 0, culled = 0;
   for (size_t i = 0; i < cameras.size(); ++i) {
@@ -199,6 +197,15 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
                              {"cells", stats.cells},
                              {"billboards", stats.billboards},
                              {"levels", {stats.min_level, stats.max_level}}};
+    if (frame.mesh) {
+      result.mesh_counts.push_back(*frame.mesh);
+      record["triangles"] = frame.mesh->triangles;
+      record["points"] = frame.mesh->points;
+      record["lines"] = frame.mesh->lines;
+      record["ellipsoids"] = frame.mesh->ellipsoids;
+      record["instances_full"] = frame.mesh->full_instances;
+      record["instances_reduced"] = frame.mesh->reduced_instances;
+    }
     if (scene) {
       record["instances_drawn"] = frame.instances_drawn;
       record["instances_culled"] = frame.instances_culled;

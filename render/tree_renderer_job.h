@@ -10,6 +10,7 @@
 
 #include "core/camera.h"
 #include "core/progress.h"
+#include "render/frame_source.h"
 #include "render/tree_renderer.h"
 
 namespace voltree {
@@ -30,8 +31,9 @@ struct RenderJobOptions {
 };
 
 struct RenderJobResult {
-  std::vector<std::string> frames;  // file names inside the output folder
-  std::vector<FrameStats> stats;    // per frame (a scene's: summed over its instances)
+  std::vector<std::string> frames;           // file names inside the output folder
+  std::vector<FrameStats> stats;             // per frame (a scene's: summed over its instances)
+  std::vector<MeshFrameCounts> mesh_counts;  // per frame, scenes of meshes only
   double mean_instances_drawn = 1, mean_instances_culled = 0;
   GpuMemory gpu;         // buffers and atlases of all assets
   double median_ms = 0;  // of FrameStats::frame_ms
@@ -45,6 +47,9 @@ struct RenderJobResult {
 // A camera's intrinsics scaled to a new image size (focal lengths and principal point).
 Camera ResizeCamera(const Camera& camera, int width, int height);
 
-RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress);
+// `mesh_scene`: draw the scene's meshes with this source (lod/mesh_scene_job.h) instead of its
+// assets; only for scenes.
+RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress,
+                             const MeshSceneSourceFactory& mesh_scene = {});
 
 }  // namespace voltree

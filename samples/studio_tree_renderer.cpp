@@ -128,17 +128,7 @@ StudioTreeRenderer::StudioTreeRenderer(const TreeMesh& mesh) : materials_(mesh.m
   depth_program_.Set("uTexture", 0);
   program_.Set("uTexture", 0);
 
-  // The crown: bounds of the vertices of alpha-tested (leaf) materials, else of everything.
-  std::vector<bool> leafy(mesh.materials.size());
-  for (size_t m = 0; m < mesh.materials.size(); ++m) leafy[m] = mesh.materials[m].alpha_mode != AlphaMode::kOpaque;
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = -lo;
-  for (const MeshGroup& group : mesh.groups)
-    if (leafy[group.material])
-      for (uint32_t index : group.indices) {
-        lo = lo.cwiseMin(mesh.vertices[index].position);
-        hi = hi.cwiseMax(mesh.vertices[index].position);
-      }
-  if (!(lo.array() <= hi.array()).all()) std::tie(lo, hi) = mesh.Bounds();
+  const auto [lo, hi] = mesh.CrownBounds();
   crown_center_ = 0.5f * (lo + hi);
   crown_radii_ = (0.5f * (hi - lo)).cwiseMax(1e-3f);
   CheckGl("uploading the tree mesh");

@@ -34,6 +34,18 @@ std::pair<Eigen::Vector3f, Eigen::Vector3f> TreeMesh::Bounds() const {
   return {lo, hi};
 }
 
+std::pair<Eigen::Vector3f, Eigen::Vector3f> TreeMesh::CrownBounds() const {
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = -lo;
+  for (const MeshGroup& group : groups)
+    if (materials[group.material].alpha_mode != AlphaMode::kOpaque)
+      for (uint32_t index : group.indices) {
+        lo = lo.cwiseMin(vertices[index].position);
+        hi = hi.cwiseMax(vertices[index].position);
+      }
+  if (!(lo.array() <= hi.array()).all()) return Bounds();
+  return {lo, hi};
+}
+
 void TreeMesh::Check() const {
   if (vertices.empty() || TriangleCount() == 0) Fail("the mesh has no triangles");
   for (size_t v = 0; v < vertices.size(); ++v)

@@ -49,6 +49,9 @@ struct TreeMesh {
   size_t TriangleCount() const;
   // Axis-aligned bounds of all vertices; {min, max}.
   std::pair<Eigen::Vector3f, Eigen::Vector3f> Bounds() const;
+  // The crown the studio's light shades: bounds of the vertices of alpha-tested or blended (leaf)
+  // materials, else Bounds().
+  std::pair<Eigen::Vector3f, Eigen::Vector3f> CrownBounds() const;
   // Throws Error when an index, material or texture reference is out of range or empty.
   void Check() const;
 };

@@ -11,6 +11,7 @@ import random
 
 HERE = pathlib.Path(__file__).resolve().parent
 ASSETS = {"oak": "oak.vtree", "pine": "pine.vtree", "young-oak": "young-oak.vtree"}
+MESHES = {"oak": "oak", "pine": "pine", "young-oak": "young-oak"}  # the presets the assets were captured from
 GROUND = [96, 110, 70]
 
 
@@ -31,7 +32,7 @@ def forest(count=290, side=140.0, min_distance=6.0, seed=2006):
     for x, y in points:
         asset = rng.choices(["oak", "pine", "young-oak"], weights=[45, 35, 20])[0]
         trees.append(instance(asset, x, y, rng.uniform(0, 360), rng.uniform(0.75, 1.2)))
-    return {"assets": ASSETS, "ground": {"size": side + 30, "colour": GROUND}, "instances": trees}
+    return {"assets": ASSETS, "meshes": MESHES, "ground": {"size": side + 30, "colour": GROUND}, "instances": trees}
 
 
 def square(spacing=14.0):
@@ -40,12 +41,13 @@ def square(spacing=14.0):
     border = [(x, y) for y in coords for x in coords if x in (coords[0], coords[-1]) or y in (coords[0], coords[-1])]
     names = ["oak", "pine", "young-oak"]
     trees = [instance(names[i % 3], x, y, 30.0 * i, 1.0) for i, (x, y) in enumerate(border)]
-    return {"assets": ASSETS, "ground": {"size": 5 * spacing, "colour": GROUND}, "instances": trees}
+    return {"assets": ASSETS, "meshes": MESHES, "ground": {"size": 5 * spacing, "colour": GROUND}, "instances": trees}
 
 
 def write(name, scene):
     # One instance per line, so that the file reads (and diffs) like a table.
-    lines = ["{", '  "assets": ' + json.dumps(scene["assets"]) + ",", '  "ground": ' + json.dumps(scene["ground"]) + ",",
+    lines = ["{", '  "assets": ' + json.dumps(scene["assets"]) + ",", '  "meshes": ' + json.dumps(scene["meshes"]) + ",",
+             '  "ground": ' + json.dumps(scene["ground"]) + ",",
              '  "instances": [']
     lines += ["    " + json.dumps(t) + ("," if i + 1 < len(scene["instances"]) else "") for i, t in enumerate(scene["instances"])]
     text = "\n".join(lines + ["  ]", "}"])

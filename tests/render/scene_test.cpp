@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <unistd.h>
 
@@ -78,7 +79,7 @@ TEST(Scene, ErrorsNameTheFileAndTheField) {
   EXPECT_EQ(ParseError(Edited(R"("scale": 1.5)", R"("scael": 1.5)")),
             "scene.json: unknown key instances[0].scael (expected asset, position, rotation, scale)");
   EXPECT_EQ(ParseError(Edited(R"("ground")", R"("grund")")),
-            "scene.json: unknown key grund (expected assets, ground, instances)");
+            "scene.json: unknown key grund (expected assets, ground, instances, meshes)");
   EXPECT_EQ(ParseError(Edited(R"("colour": [10, 20, 30])", R"("colour": [10, 256, 30])")),
             "scene.json: ground.colour[1] must be an integer 0..255, got 256");
   EXPECT_EQ(ParseError(Edited(R"("position": [-3, 0, 0.5])", R"("position": [-3, 0])")),
@@ -119,6 +120,61 @@ TEST(Scene, LoadNamesMissingAssetFiles) {
   EXPECT_NE(message.find((dir / "override" / "trees" / "pine.vtree").string()), std::string::npos) << message;
   EXPECT_THROW(LoadScene(dir / "missing.json"), Error);
   fs::remove_all(dir);
+}
+
+// The scene's meshes: trees named as a preset or a mesh file, for render --lod METHOD.
+TEST(SceneMeshes, NameAPresetOrAMeshFileBesideOrInsteadOfTheAssets) {
+  const Scene scene = ParseScene(R"({
+    "assets": {"oak": "oak.vtree"},
+    "meshes": {"oak": "oak", "aspen": {"tree": "trees/aspen.glb", "up": "z"}, "pine": {"tree": "pine", "seed": 5}},
+    "instances": [{"asset": "oak", "position": [0, 0, 0]}, {"asset": "aspen", "position": [5, 0, 0]}]
+  })",
+                                 "scene.json", "/scenes");
+  ASSERT_EQ(scene.meshes.size(), 3u);  // sorted by name
+  EXPECT_EQ(scene.meshes[0].name, "aspen");
+  EXPECT_EQ(scene.meshes[0].tree, "trees/aspen.glb");
+  EXPECT_EQ(scene.meshes[0].path, std::filesystem::path("/scenes/trees/aspen.glb"));
+  EXPECT_EQ(scene.meshes[0].up, "z");
+  EXPECT_EQ(scene.meshes[2].seed, 5u);
+  EXPECT_EQ(scene.meshes[1].up, "y");
+  // One name, one tree: the oak is both an asset and a mesh; the aspen a mesh only.
+  EXPECT_EQ(scene.instances[0].asset, 0);
+  EXPECT_EQ(scene.instances[0].mesh, 1);
+  EXPECT_EQ(scene.instances[1].asset, -1);
+  EXPECT_EQ(scene.instances[1].mesh, 0);
+  // Meshes alone make a scene.
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": "oak"}, "instances": []})"), "");
+}
+
+TEST(SceneMeshes, ErrorsNameTheField) {
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": "oak"}, "instances": [{"asset": "elm", "position": [0, 0, 0]}]})"),
+            R"(scene.json: instances[0].asset "elm" is not one of the assets or meshes (oak))");
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": {"tree": "a.glb", "up": "x"}}, "instances": []})"),
+            R"(scene.json: meshes.oak.up must be "y" or "z", got "x")");
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": 3}, "instances": []})"),
+            "scene.json: meshes.oak must be a preset name or a .gltf, .glb or .obj path, got 3");
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": {"up": "y"}}, "instances": []})"),
+            "scene.json: meshes.oak: missing required key tree");
+  EXPECT_EQ(ParseError(R"({"meshes": {"oak": {"tree": "oak", "seed": -1}}, "instances": []})"),
+            "scene.json: meshes.oak.seed must be an integer >= 0, got -1");
+  EXPECT_EQ(ParseError(R"({"instances": []})"), "scene.json: missing required key assets");
+}
+
+TEST(SceneMeshes, AMeshOnlyTreeNeedsAMeshMethodToBeDrawn) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "voltree_scene_meshes_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scene.json") << R"({"meshes": {"pine": "pine"},
+      "instances": [{"asset": "pine", "position": [0, 0, 0]}]})";
+  try {
+    LoadScene(dir / "scene.json");
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("instances[0].asset \"pine\" is a mesh without a .vtree asset"),
+              std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(LoadScene(dir / "scene.json", {.asset_folder = "", .meshes = true}).instances.size(), 1u);
+  std::filesystem::remove_all(dir);
 }
 
 View LookingAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, int width = 320, int height = 240) {
