@@ -136,20 +136,6 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> GrownBounds(const TreeMesh& mesh, do
   return {lo.cast<double>() - pad, hi.cast<double>() + pad};
 }
 
-// The box the studio shader darkens the crown in: that of the alpha-tested or blended vertices,
-// else of the mesh (as StudioTreeRenderer takes it), so primitives are lit as the leaves were.
-std::pair<Eigen::Vector3f, Eigen::Vector3f> CrownBounds(const TreeMesh& mesh) {
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e30f), hi = -lo;
-  for (const MeshGroup& group : mesh.groups)
-    if (mesh.materials[group.material].alpha_mode != AlphaMode::kOpaque)
-      for (uint32_t index : group.indices) {
-        lo = lo.cwiseMin(mesh.vertices[index].position);
-        hi = hi.cwiseMax(mesh.vertices[index].position);
-      }
-  if (!(lo.array() <= hi.array()).all()) return mesh.Bounds();
-  return {lo, hi};
-}
-
 std::vector<Ellipsoid> ScaledEllipsoids(std::vector<Ellipsoid> ellipsoids, double scale) {
   for (Ellipsoid& ellipsoid : ellipsoids) ellipsoid.axes *= static_cast<float>(scale);
   return ellipsoids;
@@ -199,7 +185,7 @@ class LodBench {
         views_(BenchViews(rig_, mesh.Bounds().first.cast<double>(), mesh.Bounds().second.cast<double>(), options.studio,
                           options.top_views)),
         full_(mesh),
-        crown_(CrownBounds(mesh)) {
+        crown_(mesh.CrownBounds()) {
     for (int size : options.sizes) lambdas_.push_back(LambdaForScreenSize(size, frame_, options.min_lambda));
   }
 
