@@ -263,7 +263,7 @@ class BoundedSeeding {
       arena_.sketch[m] = MakeSketch(Projected(i), Projected(centre), axes_.count, joiners[j].distance, false);
     });
     cell.potential = SumNearest(cell);
-    cells_.push_back(std::move(cell));
+    cells_.push_back(cell);
   }
 
   // Drops the members that moved on, keeping every cell's order (cells stay in arena order).

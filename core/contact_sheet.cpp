@@ -1,6 +1,7 @@
 #include "core/contact_sheet.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -30,7 +31,7 @@ void DrawThumbnail(const Image8& source, int width, int height, uint8_t backgrou
           }
         }
       const double count = double(x1 - x0) * (y1 - y0);
-      for (int c = 0; c < 3; ++c) sheet.at(left + x, top + y, c) = uint8_t(sum[c] / count + 0.5);
+      for (int c = 0; c < 3; ++c) sheet.at(left + x, top + y, c) = uint8_t(std::lround(sum[c] / count));
     }
   }
 }
