@@ -70,6 +70,12 @@ void PrintMeshCounts(const std::vector<MeshFrameCounts>& counts) {
   std::printf(
       "per frame: %.0f triangles, %.0f points, %.0f lines, %.0f ellipsoids; instances %.1f full, %.1f reduced\n",
       triangles / n, points / n, lines / n, ellipsoids / n, full / n, reduced / n);
+  double occluded = 0, visible = 0, tested = 0;
+  for (const MeshFrameCounts& c : counts)
+    occluded += double(c.occluded_instances), visible += c.visible_sum, tested += double(c.visibility_tested);
+  if (tested > 0)
+    std::printf("occlusion per frame: %.1f instances lowered, mean visible fraction %.3f\n", occluded / n,
+                visible / tested);
 }
 
 void PrintRenderResult(const RenderJobOptions& job, const RenderJobResult& result) {

@@ -217,12 +217,13 @@ std::vector<OptionSpec> RenderFlags() {
        {"LodOptions.rule", "MeshLodOptions.method"},
        "LOD of .vtree assets, the rule: screen (Euclidean distance to each cell) or planes (Linz 2006: depth along "
        "the view direction); of a scene's meshes (its meshes field), lod-bench's method per instance at the level "
-       "its screen size picks: mesh (the full mesh), points (Deussen 2002), ellipsoids (Clasen) or cook "
-       "(stochastic pruning), the full mesh where the tree is near"},
+       "its screen size picks: mesh (the full mesh), points (Deussen 2002), ellipsoids (Clasen), cook "
+       "(stochastic pruning) or neubert (Neubert 2011: cook's lambda in rendering-priority order, times the "
+       "visible fraction of the crown in the previous frame's depth), the full mesh where the tree is near"},
       {"--full-pixels",
        {"MeshLodOptions.full_pixels"},
-       "--lod cook and ellipsoids: trees at least this many pixels tall on screen are drawn as the full mesh; "
-       "cook keeps lambda = (height / this)^2 of the leaves below it"},
+       "--lod cook, neubert and ellipsoids: trees at least this many pixels tall on screen are drawn as the full "
+       "mesh; cook and neubert keep lambda = (height / this)^2 of the leaves below it"},
       {"--texel-pixels",
        {"LodOptions.max_texel_pixels"},
        "LOD: descend while a billboard texel covers more pixels than this"},

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "lod/branch_skeleton.h"
 #include "lod/pruned_mesh.h"
+#include "lod/rendering_priority.h"
 #include "lod/screen_size_rule.h"
 #include "lod/stochastic_pruning.h"
 #include "lod/surface_colour.h"
@@ -64,6 +65,17 @@ MeshLodModel::MeshLodModel(const TreeMesh& mesh, const std::string& name, const 
       order_ = RandomLeafOrder(leaves_.size(), options_.seed);
       reduces_ = !leaves_.empty();
       break;
+    case MeshLodMethod::kNeubert: {
+      if (leaves_.empty()) notes_.push_back(no_leaves + " needs leaves; drawn as the full mesh");
+      RenderingPriorityOptions priority;
+      priority.seed = options_.seed;
+      order_ = RenderingPriorityOrder(mesh_, leaves_, priority);
+      // The hull of the priority's metaballs (radius a fraction of the height, as there).
+      crown_samples_ = CrownHullSamples(leaves_, priority.radius_fraction * std::max((hi_ - lo_).z(), 1e-6),
+                                        options_.occlusion.samples, options_.seed);
+      reduces_ = !leaves_.empty();
+      break;
+    }
     case MeshLodMethod::kPoints:
     case MeshLodMethod::kEllipsoids: {
       const BranchSkeleton skeleton = ExtractBranchSkeleton(mesh_);
@@ -92,8 +104,9 @@ MeshLodModel::MeshLodModel(const TreeMesh& mesh, const std::string& name, const 
   preprocess_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-MeshLodLevel MeshLodModel::Choose(double pixels_per_unit) const {
+MeshLodLevel MeshLodModel::Choose(double pixels_per_unit, double visible) const {
   if (!(pixels_per_unit > 0)) Fail("lod: pixels per unit ", pixels_per_unit, " is not positive");
+  if (!(visible >= 0 && visible <= 1)) Fail("lod: visible fraction ", visible, " is outside [0, 1]");
   MeshLodLevel level;
   if (!reduces_) return level;
   const double size = pixels_per_unit * (hi_ - lo_).z();  // the tree's height on screen
@@ -107,6 +120,16 @@ MeshLodLevel MeshLodModel::Choose(double pixels_per_unit) const {
                                      options_.steps_per_octave);
       level.full = level.lambda >= 1;
       break;
+    case MeshLodMethod::kNeubert: {
+      // Occlusion lowers the level of near trees too: lambda(d) is 1 there.
+      const double lambda = near ? 1.0 : LambdaForScreenSize(size, options_.full_pixels, options_.min_lambda);
+      const double unoccluded = QuantisedLambda(lambda, options_.steps_per_octave);
+      level.lambda =
+          QuantisedLambda(OccludedLambda(lambda, visible, options_.occlusion.min_factor), options_.steps_per_octave);
+      level.occluded = level.lambda < unoccluded;
+      level.full = level.lambda >= 1;
+      break;
+    }
     case MeshLodMethod::kPoints: {
       const PointLineLevel wanted = PointLineLevelFor(point_lines_, pixels_per_unit, options_.points);
       if (wanted.polygons) break;  // Deussen et al.: more points asked for than sampled
@@ -135,6 +158,7 @@ MeshLodModel::Key MeshLodModel::KeyOf(const MeshLodLevel& level) const {
   if (level.full) return {0, 0, 0};
   switch (options_.method) {
     case MeshLodMethod::kCook:
+    case MeshLodMethod::kNeubert:
       return {1, static_cast<size_t>(std::llround(-std::log2(level.lambda) * options_.steps_per_octave)), 0};
     case MeshLodMethod::kPoints:
       return {2, level.points, level.lines};
@@ -156,7 +180,7 @@ MeshLodModel::Model MeshLodModel::MeshModel(const TreeMesh& mesh) const {
 
 MeshLodModel::Model MeshLodModel::Build(const MeshLodLevel& level) const {
   if (level.full) return MeshModel(mesh_);
-  if (options_.method == MeshLodMethod::kCook)
+  if (options_.method == MeshLodMethod::kCook || options_.method == MeshLodMethod::kNeubert)
     return MeshModel(BuildPrunedMesh(mesh_, leaves_, PruneLeaves(order_, level.lambda, CookAreaScale(level.lambda))));
   Model model;
   std::vector<PointPrimitive> points, surface;
@@ -204,6 +228,7 @@ MeshFrameCounts MeshLodModel::Draw(const MeshLodLevel& level, const View& view, 
   }
   MeshFrameCounts counts = model.counts;
   (level.full ? counts.full_instances : counts.reduced_instances) = 1;
+  counts.occluded_instances = level.occluded ? 1 : 0;
   return counts;
 }
 

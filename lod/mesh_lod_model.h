@@ -1,7 +1,7 @@
 // One tree mesh of a scene prepared for a mesh LOD method (lod/mesh_lod_options.h): what the
-// method needs, built once (the leaves and their random order; the points and lines; the EM
-// levels and the line merges), the level each screen size draws, and the GPU models of the levels
-// drawn so far, shared by every instance of the tree. A method that cannot be built for the mesh
+// method needs, built once (the leaves and their random or priority order, the crown's hull
+// samples; the points and lines; the EM levels and the line merges), the level each screen size draws, and the GPU
+// models of the levels drawn so far, shared by every instance of the tree. A method that cannot be built for the mesh
 // (no leaves, no bark) says so in notes() and draws what it can, else the full mesh.
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "lod/crown_samples.h"
 #include "lod/ellipsoid_clusters.h"
 #include "lod/leaf_separation.h"
 #include "lod/line_simplification.h"
@@ -29,7 +30,8 @@ namespace voltree {
 // What one instance draws.
 struct MeshLodLevel {
   bool full = true;              // the full mesh
-  double lambda = 1;             // cook: the fraction of leaves kept
+  double lambda = 1;             // cook, neubert: the fraction of leaves kept
+  bool occluded = false;         // neubert: lambda lowered because other trees hide this one
   size_t points = 0, lines = 0;  // points: the prefix of each
   float point_pixels = 1;        // points: the splat side for this instance's distance
   int ellipsoid_level = -1;      // ellipsoids: index into the levels; -1: none (no leaves)
@@ -56,8 +58,12 @@ class MeshLodModel {
   const Eigen::Vector3d& lo() const { return lo_; }
   const Eigen::Vector3d& hi() const { return hi_; }
 
-  // The level a tree drawn `pixels_per_unit` (pixels per mesh unit at its distance) gets.
-  MeshLodLevel Choose(double pixels_per_unit) const;
+  // Neubert's occlusion test points on the crown hull (mesh frame); empty for other methods.
+  const std::vector<CrownSample>& crown_samples() const { return crown_samples_; }
+
+  // The level a tree drawn `pixels_per_unit` (pixels per mesh unit at its distance) gets;
+  // neubert: with `visible` the smoothed visible fraction f of its crown (1: unoccluded).
+  MeshLodLevel Choose(double pixels_per_unit, double visible = 1) const;
   // Builds the GPU model `level` draws, once (needs a current GL context).
   void Prepare(const MeshLodLevel& level);
   // Draws a prepared level with `view` and `lighting` in the mesh's frame; what was drawn.
@@ -83,10 +89,11 @@ class MeshLodModel {
   Eigen::Vector3d lo_, hi_;
   std::pair<Eigen::Vector3f, Eigen::Vector3f> crown_;
   std::vector<Leaf> leaves_;
-  std::vector<uint32_t> order_;         // cook
-  PointLineHierarchy point_lines_;      // points
-  std::vector<EllipsoidLevel> levels_;  // ellipsoids
-  LineHierarchy line_hierarchy_;        // ellipsoids
+  std::vector<uint32_t> order_;             // cook: random; neubert: rendering priority
+  std::vector<CrownSample> crown_samples_;  // neubert
+  PointLineHierarchy point_lines_;          // points
+  std::vector<EllipsoidLevel> levels_;      // ellipsoids
+  LineHierarchy line_hierarchy_;            // ellipsoids
   bool has_lines_ = false;
   bool reduces_ = false;  // whether the method can draw anything but the full mesh
   std::vector<std::string> notes_;

@@ -8,7 +8,8 @@ namespace {
 constexpr std::pair<MeshLodMethod, const char*> kNames[] = {{MeshLodMethod::kMesh, "mesh"},
                                                             {MeshLodMethod::kPoints, "points"},
                                                             {MeshLodMethod::kEllipsoids, "ellipsoids"},
-                                                            {MeshLodMethod::kCook, "cook"}};
+                                                            {MeshLodMethod::kCook, "cook"},
+                                                            {MeshLodMethod::kNeubert, "neubert"}};
 
 }  // namespace
 
@@ -40,6 +41,7 @@ void MeshLodOptions::Check() const {
   if (supersample < 1 || supersample > 8) FailOption("MeshLodOptions.supersample", "is ", supersample, ", not in 1..8");
   points.Check();
   ellipsoids.Check();
+  occlusion.Check();
 }
 
 }  // namespace voltree

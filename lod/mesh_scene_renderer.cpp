@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/srgb.h"
+#include "lod/occlusion_factor.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
 #include "render/instance_view.h"
@@ -27,6 +28,8 @@ void Add(const MeshFrameCounts& drawn, MeshFrameCounts* total) {
   total->full_instances += drawn.full_instances;
   total->reduced_instances += drawn.reduced_instances;
   total->occluded_instances += drawn.occluded_instances;
+  total->visibility_tested += drawn.visibility_tested;
+  total->visible_sum += drawn.visible_sum;
 }
 
 // The premultiplied linear frame as 8-bit straight alpha, over an opaque background if one is given.
@@ -109,6 +112,32 @@ std::vector<MeshLodLevel> MeshSceneRenderer::Levels(const View& view) const {
   return levels;
 }
 
+void MeshSceneRenderer::ResetOcclusionHistory() {
+  previous_depth_.reset();
+  smoothed_visible_.clear();
+  last_occlusion_.clear();
+  last_prepass_ = false;
+}
+
+void MeshSceneRenderer::DrawFrame(const View& view, const DepthRange& depth, const std::vector<size_t>& order,
+                                  const std::vector<MeshLodLevel>& levels, MeshFrameCounts* counts,
+                                  int64_t* fragments) const {
+  target_->Bind();
+  target_->Clear(0, 0, 0, 0);
+  if (scene_.ground && depth.far > depth.near) ground_.Draw(view, depth, *scene_.ground, Linear(scene_.ground->colour));
+  if (fragments) counter_->Begin();
+  for (size_t k = 0; k < order.size(); ++k) {
+    const SceneInstance& instance = scene_.instances[order[k]];
+    StudioLighting lighting = lighting_;  // the sun stays put in the world as the tree turns
+    lighting.sun_direction = instance.transform.DirectionToAsset(lighting_.sun_direction.cast<double>()).cast<float>();
+    const double scale = instance.transform.scale;
+    Add(models_[instance.mesh]->Draw(levels[k], ViewInAssetFrame(view, instance.transform), lighting,
+                                     depth.near / scale, depth.far / scale),
+        counts);
+  }
+  if (fragments) *fragments = static_cast<int64_t>(counter_->End());
+}
+
 Image8 MeshSceneRenderer::Render(const View& view, const std::array<float, 4>& background, bool count_fragments,
                                  SceneFrameStats* stats) {
   view.camera.Check();
@@ -120,39 +149,70 @@ Image8 MeshSceneRenderer::Render(const View& view, const std::array<float, 4>& b
   const DepthRange depth = SceneDepthRange(view.pose.Center(), visible, scene_.ground);
 
   // Plan and build the models first, so that the frame time is the drawing alone.
+  std::vector<double> pixels_per_unit;
   std::vector<MeshLodLevel> levels;
   for (size_t i : order) {
     const SceneInstance& instance = scene_.instances[i];
-    levels.push_back(models_[instance.mesh]->Choose(PixelsPerUnit(instance, view)));
+    pixels_per_unit.push_back(PixelsPerUnit(instance, view));
+    levels.push_back(models_[instance.mesh]->Choose(pixels_per_unit.back()));
     models_[instance.mesh]->Prepare(levels.back());
   }
 
   const int s = options_.supersample;
   if (!target_ || target_->width() != view.camera.width * s || target_->height() != view.camera.height * s)
     target_ = std::make_unique<Framebuffer>(view.camera.width * s, view.camera.height * s, ColorFormat::kRGBA16F);
-  target_->Bind();
-  target_->Clear(0, 0, 0, 0);
   SceneFrameStats frame;
   frame.mesh = MeshFrameCounts{};
   frame.instances_drawn = order.size();
   frame.instances_culled = spheres.size() - order.size();
-  glFinish();
-  const auto start = std::chrono::steady_clock::now();
-  if (scene_.ground && depth.far > depth.near) ground_.Draw(view, depth, *scene_.ground, Linear(scene_.ground->colour));
-  const bool count = count_fragments && counter_;
-  if (count) counter_->Begin();
-  for (size_t k = 0; k < order.size(); ++k) {
-    const SceneInstance& instance = scene_.instances[order[k]];
-    StudioLighting lighting = lighting_;  // the sun stays put in the world as the tree turns
-    lighting.sun_direction = instance.transform.DirectionToAsset(lighting_.sun_direction.cast<double>()).cast<float>();
-    const double scale = instance.transform.scale;
-    Add(models_[instance.mesh]->Draw(levels[k], ViewInAssetFrame(view, instance.transform), lighting,
-                                     depth.near / scale, depth.far / scale),
-        &*frame.mesh);
+  double ms = 0;  // the drawing, and neubert's pre-pass, depth read-backs and tests
+  const auto timed = [&ms](const auto& work) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    glFinish();
+    ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  };
+
+  const bool neubert = options_.method == MeshLodMethod::kNeubert;
+  if (neubert) {
+    // No previous frame of this size: a depth pre-pass of every tree at its unoccluded level.
+    last_prepass_ = !previous_depth_ || previous_depth_->width() != target_->width() ||
+                    previous_depth_->height() != target_->height();
+    if (last_prepass_)
+      timed([&] {
+        MeshFrameCounts ignored;
+        DrawFrame(view, depth, order, levels, &ignored);
+        previous_depth_ = FrameDepth::Read(view, depth, s);
+      });
+    smoothed_visible_.resize(scene_.instances.size());
+    last_occlusion_.assign(scene_.instances.size(), InstanceOcclusion{});
+    timed([&] {
+      for (size_t k = 0; k < order.size(); ++k) {
+        const SceneInstance& instance = scene_.instances[order[k]];
+        const MeshLodModel& model = *models_[instance.mesh];
+        InstanceOcclusion& occlusion = last_occlusion_[order[k]];
+        occlusion.drawn = true;
+        occlusion.measured = VisibleFraction(model.crown_samples(), instance.transform, (model.hi() - model.lo()).z(),
+                                             *previous_depth_, options_.occlusion);
+        occlusion.smoothed =
+            SmoothedVisibility(smoothed_visible_[order[k]], occlusion.measured.fraction, options_.occlusion.fall);
+        smoothed_visible_[order[k]] = occlusion.smoothed;
+        levels[k] = model.Choose(pixels_per_unit[k], occlusion.smoothed);
+        occlusion.level = levels[k];
+        frame.mesh->visibility_tested += 1;
+        frame.mesh->visible_sum += occlusion.smoothed;
+      }
+    });
+    for (size_t k = 0; k < order.size(); ++k) models_[scene_.instances[order[k]].mesh]->Prepare(levels[k]);
   }
-  if (count) frame.trees.fragments = static_cast<int64_t>(counter_->End());
-  glFinish();
-  frame.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  const bool count = count_fragments && counter_;
+  timed([&] {
+    DrawFrame(view, depth, order, levels, &*frame.mesh, count ? &frame.trees.fragments : nullptr);
+    if (neubert) previous_depth_ = FrameDepth::Read(view, depth, s);
+  });
+  frame.frame_ms = ms;
   frame.trees.frame_ms = frame.frame_ms;
   CheckGl("render: drawing the scene's meshes");
   const Image8 image = Encode(downsampler_.Downsample(*target_, s), background);

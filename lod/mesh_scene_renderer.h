@@ -5,15 +5,22 @@
 // so near trees hide far fragments early) after the ground, each with the studio's shader and
 // light in its own frame (render/instance_view.h), into a linear supersampled target that is
 // box-filtered and encoded to sRGB. Each tree's models are shared by its instances.
+//
+// neubert also keeps the frame's depth buffer: the next frame tests each tree's crown samples
+// against it (lod/occlusion_factor.h) and lowers the level of the trees it hid. A first frame
+// (or one of another size) has no previous frame: it draws a depth pre-pass of every tree at its
+// unoccluded level first and tests against that, so a single still frame is pruned as well.
 #pragma once
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/image.h"
+#include "lod/frame_depth.h"
 #include "lod/mesh_lod_model.h"
 #include "lod/mesh_lod_options.h"
 #include "render/box_filter.h"
@@ -27,6 +34,14 @@
 #include "samples/tree_mesh.h"
 
 namespace voltree {
+
+// What neubert's occlusion test gave an instance in the last frame.
+struct InstanceOcclusion {
+  bool drawn = false;   // in view (the rest were not tested)
+  Visibility measured;  // against the previous frame's (or the pre-pass's) depth
+  double smoothed = 1;  // f after the hysteresis, what lambda used
+  MeshLodLevel level;   // what it drew
+};
 
 class MeshSceneRenderer {
  public:
@@ -47,8 +62,19 @@ class MeshSceneRenderer {
   Image8 Render(const View& view, const std::array<float, 4>& background, bool count_fragments,
                 SceneFrameStats* stats = nullptr);
 
+  // neubert: the last frame's test per instance, in instance order (empty for other methods),
+  // and whether that frame drew a depth pre-pass for want of a previous frame.
+  const std::vector<InstanceOcclusion>& LastOcclusion() const { return last_occlusion_; }
+  bool LastFrameHadPrepass() const { return last_prepass_; }
+  // Forgets the previous frame and the smoothed f: the next frame is a first frame.
+  void ResetOcclusionHistory();
+
  private:
   double PixelsPerUnit(const SceneInstance& instance, const View& view) const;
+  // Clears the target and draws the ground and the instances `order` at `levels`; with
+  // `fragments`, the trees' fragment shader invocations (the ground's not counted).
+  void DrawFrame(const View& view, const DepthRange& depth, const std::vector<size_t>& order,
+                 const std::vector<MeshLodLevel>& levels, MeshFrameCounts* counts, int64_t* fragments = nullptr) const;
 
   Scene scene_;
   MeshLodOptions options_;
@@ -58,6 +84,11 @@ class MeshSceneRenderer {
   BoxDownsampler downsampler_;
   std::unique_ptr<Framebuffer> target_;
   std::unique_ptr<FragmentCounter> counter_;
+  // neubert's history
+  std::optional<FrameDepth> previous_depth_;
+  std::vector<std::optional<double>> smoothed_visible_;  // per instance
+  std::vector<InstanceOcclusion> last_occlusion_;
+  bool last_prepass_ = false;
 };
 
 }  // namespace voltree

@@ -41,7 +41,10 @@ struct MeshFrameCounts {
   size_t full_instances = 0;      // drawn as the full mesh (near, or the method could not be built)
   size_t reduced_instances = 0;   // drawn by the method at a reduced level
   size_t occluded_instances = 0;  // neubert: drawn with fewer leaves because trees in front hide them
+  size_t visibility_tested = 0;   // neubert: instances whose crown was tested against a depth buffer
+  double visible_sum = 0;         // neubert: their smoothed visible fractions f, summed
   size_t Primitives() const { return triangles + points + lines + ellipsoids; }
+  double MeanVisible() const { return visibility_tested ? visible_sum / double(visibility_tested) : 1.0; }
 };
 
 struct SceneFrameStats {

@@ -205,6 +205,10 @@ RenderJobResult RunRenderJob(const RenderJobOptions& options, Progress* progress
       record["ellipsoids"] = frame.mesh->ellipsoids;
       record["instances_full"] = frame.mesh->full_instances;
       record["instances_reduced"] = frame.mesh->reduced_instances;
+      if (frame.mesh->visibility_tested > 0) {  // neubert's occlusion
+        record["instances_occluded"] = frame.mesh->occluded_instances;
+        record["mean_visible"] = frame.mesh->MeanVisible();
+      }
     }
     if (scene) {
       record["instances_drawn"] = frame.instances_drawn;

@@ -61,7 +61,7 @@ class RenderLodCli : public ::testing::Test {
 };
 
 TEST_F(RenderLodCli, EveryMethodWritesFramesWithTheirCountsAndNamesTheLeaflessTree) {
-  for (const std::string method : {"mesh", "points", "ellipsoids", "cook"}) {
+  for (const std::string method : {"mesh", "points", "ellipsoids", "cook", "neubert"}) {
     SCOPED_TRACE(method);
     const test::Outcome outcome =
         Run("render scene.json --lod " + method + " --orbit 2 --size 96x64 --stats --full-pixels 40 -o " + method);
@@ -78,6 +78,10 @@ TEST_F(RenderLodCli, EveryMethodWritesFramesWithTheirCountsAndNamesTheLeaflessTr
       EXPECT_EQ(frame["instances_full"].get<int>() + frame["instances_reduced"].get<int>(), 3);
       EXPECT_EQ(frame["points"].get<int>() > 0, method == "points");
       EXPECT_EQ(frame["ellipsoids"].get<int>() > 0, method == "ellipsoids");
+      EXPECT_EQ(frame.contains("mean_visible"), method == "neubert");  // the occlusion test's f
+    }
+    if (method == "neubert") {
+      EXPECT_NE(outcome.output.find("occlusion per frame: "), std::string::npos) << outcome.output;
     }
     EXPECT_TRUE(fs::is_regular_file(dir_ / method / "frame_001.png"));
   }
@@ -87,7 +91,7 @@ TEST_F(RenderLodCli, BadInputIsNamedAndNothingIsWritten) {
   test::Outcome outcome = Run("render scene.json --lod twigs --orbit 1 -o out");
   EXPECT_NE(outcome.status, 0);
   EXPECT_NE(outcome.output.find("--lod 'twigs': expected a rule for .vtree assets (screen, planes) or, for a scene's "
-                                "meshes, a method (mesh, points, ellipsoids, cook)"),
+                                "meshes, a method (mesh, points, ellipsoids, cook, neubert)"),
             std::string::npos)
       << outcome.output;
   outcome = Run("render tree.vtree --lod points --orbit 1 -o out");

@@ -75,7 +75,7 @@ size_t Covered(const Image8& image) {
 }
 
 constexpr MeshLodMethod kMethods[] = {MeshLodMethod::kMesh, MeshLodMethod::kPoints, MeshLodMethod::kEllipsoids,
-                                      MeshLodMethod::kCook};
+                                      MeshLodMethod::kCook, MeshLodMethod::kNeubert};
 
 TEST(MeshLodLevels, CountsAndLambdasRoundUpToCachedLevels) {
   for (size_t wanted : {0, 1, 7, 100, 499, 500, 900}) {
@@ -170,16 +170,19 @@ TEST(MeshSceneRenderer, DeterministicWithASeed) {
 TEST(MeshSceneRenderer, AMeshWithoutLeavesIsNamedAndTheRestAreStillReduced) {
   GlContext context;
   const Scene scene = Row({10, 12}, /*bare_at=*/"0");
-  for (MeshLodMethod method : {MeshLodMethod::kCook, MeshLodMethod::kPoints, MeshLodMethod::kEllipsoids}) {
+  for (MeshLodMethod method :
+       {MeshLodMethod::kCook, MeshLodMethod::kNeubert, MeshLodMethod::kPoints, MeshLodMethod::kEllipsoids}) {
     SCOPED_TRACE(MeshLodMethodName(method));
+    const bool prunes = method == MeshLodMethod::kCook || method == MeshLodMethod::kNeubert;
     MeshSceneRenderer renderer(scene, Meshes(scene), Options(method));
     const std::vector<std::string> notes = renderer.Notes();
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_NE(notes[0].find("meshes.bare: no separable leaves"), std::string::npos) << notes[0];
     const std::vector<MeshLodLevel> levels = renderer.Levels(LookingNorth());
     EXPECT_FALSE(levels[1].full);  // the leafy tree
-    if (method == MeshLodMethod::kCook) {
-      EXPECT_NE(notes[0].find("cook needs leaves; drawn as the full mesh"), std::string::npos);
+    if (prunes) {
+      EXPECT_NE(notes[0].find(Str(MeshLodMethodName(method), " needs leaves; drawn as the full mesh")),
+                std::string::npos);
       EXPECT_TRUE(levels[0].full);
     } else {
       EXPECT_NE(notes[0].find("draws only the branch lines"), std::string::npos);
@@ -187,8 +190,72 @@ TEST(MeshSceneRenderer, AMeshWithoutLeavesIsNamedAndTheRestAreStillReduced) {
     }
     SceneFrameStats stats;
     EXPECT_GT(Covered(renderer.Render(LookingNorth(), {0, 0, 0, 0}, false, &stats)), 0u);
-    EXPECT_EQ(stats.mesh->reduced_instances, method == MeshLodMethod::kCook ? 1u : 2u);
+    EXPECT_EQ(stats.mesh->reduced_instances, prunes ? 1u : 2u);
   }
+}
+
+// Trees named "leafy" at the given (x, y) positions.
+Scene At(const std::vector<Eigen::Vector2d>& positions) {
+  std::string json = R"({"meshes": {"leafy": "leafy"}, "instances": [)";
+  for (size_t i = 0; i < positions.size(); ++i)
+    json += Str(i ? "," : "", R"({"asset": "leafy", "position": [)", positions[i].x(), ", ", positions[i].y(), ", 0]}");
+  return ParseScene(json + "]}", "trees.json", "");
+}
+
+TEST(MeshSceneRenderer, NeubertPrunesTreesHiddenBehindOthersAndNotTreesInTheOpen) {
+  GlContext context;
+  // A near tree filling most of the frame, two behind it; then the same three side by side.
+  const Scene behind = At({{0, 1.2}, {0, 4}, {0, 8}});
+  const Scene open = At({{0, 1.2}, {-1.6, 4}, {3.2, 8}});
+  for (const Scene* scene : {&behind, &open}) {
+    const bool hidden = scene == &behind;
+    SCOPED_TRACE(hidden ? "behind" : "open");
+    MeshSceneRenderer cook(*scene, Meshes(*scene), Options(MeshLodMethod::kCook));
+    MeshSceneRenderer neubert(*scene, Meshes(*scene), Options(MeshLodMethod::kNeubert));
+    const std::vector<MeshLodLevel> unoccluded = cook.Levels(LookingNorth());
+    SceneFrameStats stats;
+    EXPECT_GT(Covered(neubert.Render(LookingNorth(), {0, 0, 0, 0}, false, &stats)), 200u);
+    EXPECT_TRUE(neubert.LastFrameHadPrepass());  // a first frame tests against its own pre-pass
+    const std::vector<InstanceOcclusion>& tests = neubert.LastOcclusion();
+    ASSERT_EQ(tests.size(), 3u);
+    EXPECT_EQ(stats.mesh->visibility_tested, 3u);
+    EXPECT_GT(tests[0].smoothed, 0.9);  // nothing stands in front of the near tree
+    EXPECT_EQ(tests[0].level.lambda, unoccluded[0].lambda);
+    for (size_t i = 1; i < 3; ++i) {
+      SCOPED_TRACE(i);
+      EXPECT_GT(tests[i].measured.tested, 8);
+      if (hidden) {
+        EXPECT_LT(tests[i].smoothed, 0.5);
+        EXPECT_LT(tests[i].level.lambda, unoccluded[i].lambda);
+        EXPECT_TRUE(tests[i].level.occluded);
+      } else {
+        EXPECT_GT(tests[i].smoothed, 0.9);
+        EXPECT_EQ(tests[i].level.lambda, unoccluded[i].lambda);
+      }
+    }
+    EXPECT_EQ(stats.mesh->occluded_instances, hidden ? 2u : 0u);
+    // The next frame tests against this one's depth, with no pre-pass.
+    neubert.Render(LookingNorth(), {0, 0, 0, 0}, false, &stats);
+    EXPECT_FALSE(neubert.LastFrameHadPrepass());
+    EXPECT_EQ(stats.mesh->occluded_instances, hidden ? 2u : 0u);
+  }
+}
+
+TEST(MeshSceneRenderer, NeubertIsDeterministicAndForgetsItsHistoryOnReset) {
+  GlContext context;
+  const Scene scene = At({{0, 1.2}, {0, 4}, {0, 8}});
+  const auto frames = [&](int count) {
+    MeshSceneRenderer renderer(scene, Meshes(scene), Options(MeshLodMethod::kNeubert));
+    std::vector<Image8> images;
+    for (int k = 0; k < count; ++k) images.push_back(renderer.Render(LookingNorth(), {0.5f, 0.7f, 0.9f, 1}, false));
+    renderer.ResetOcclusionHistory();
+    images.push_back(renderer.Render(LookingNorth(), {0.5f, 0.7f, 0.9f, 1}, false));
+    EXPECT_TRUE(renderer.LastFrameHadPrepass());
+    return images;
+  };
+  const std::vector<Image8> first = frames(2);
+  EXPECT_EQ(frames(2), first);
+  EXPECT_EQ(first[2], first[0]);  // after the reset, the first frame again
 }
 
 TEST(MeshSceneJob, MissingMeshesAreNamed) {
