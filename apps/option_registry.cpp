@@ -228,6 +228,11 @@ std::vector<OptionSpec> RenderFlags() {
        {"LodOptions.max_texel_pixels"},
        "LOD: descend while a billboard texel covers more pixels than this"},
       {"--tint-levels", {"TreeRenderOptions.tint_levels"}, "Colour billboards by octree level (to see the LOD)"},
+      {"--no-trim",
+       {"TreeRenderOptions.trim_quads"},
+       "Draw each billboard's whole camera-facing quad, and billboards whose alpha is 0 everywhere, instead of "
+       "quads trimmed to where the alpha can be non-zero (the same image: to measure what trimming saves with "
+       "--stats)"},
       {"--background",
        {"TreeRenderOptions.background", "ViewerOptions.background"},
        "Background colour R,G,B 0..255, opaque"},

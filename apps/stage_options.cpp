@@ -145,6 +145,7 @@ void AddRenderOptions(CLI::App& command, TreeRenderOptions& render) {
   AddOption(command, "--level", render.lod.forced_level);
   AddOption(command, "--texel-pixels", render.lod.max_texel_pixels);
   AddFlag(command, "--tint-levels", render.tint_levels);
+  AddFlag(command, "--no-trim", render.trim_quads);
   AddBackgroundOption(command, render.background);
   AddOption(command, "--billboard-scale", render.billboard_scale);
 }

@@ -1,7 +1,8 @@
 // Render benchmark: ms per frame at 1024x1024 for one tree on this machine's GL (llvmpipe here):
 // every forced level (the finest last), and the screen-space LOD at 1x to 16x the input
 // views' mean distance. Billboards are the pruned set the asset stores; the table also prints
-// how many there were before pruning.
+// how many there were before pruning, and per frame the fragments shaded (quads trimmed to their
+// alpha's extent, and whole), the pixels covered and the overdraw (fragments per covered pixel).
 //   voltree-bench-render ASSET [--size 1024] [--frames 12]
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -22,8 +23,23 @@ namespace {
 struct Row {
   std::string name;
   double median_ms = 0, traversal_ms = 0, billboards = 0, cells = 0;
+  double fragments = -1, untrimmed_fragments = -1, covered = 0;  // per frame; -1: not counted
   int min_level = 0, max_level = 0;
 };
+
+// Mean fragments per frame with `options` (-1 where the driver cannot count them).
+double MeanFragments(TreeRenderer& renderer, const std::vector<View>& cameras, TreeRenderOptions options) {
+  options.count_fragments = true;
+  renderer.ResetLodHistory();
+  double sum = 0;
+  for (const View& camera : cameras) {
+    FrameStats stats;
+    renderer.Render(camera, options, &stats);
+    if (stats.fragments < 0) return -1;
+    sum += double(stats.fragments);
+  }
+  return sum / double(cameras.size());
+}
 
 Row Measure(TreeRenderer& renderer, const std::vector<View>& cameras, const TreeRenderOptions& options,
             const std::string& name) {
@@ -34,7 +50,8 @@ Row Measure(TreeRenderer& renderer, const std::vector<View>& cameras, const Tree
   renderer.Render(cameras[0], options);  // warm-up: shader compile, buffer growth
   for (const View& camera : cameras) {
     FrameStats stats;
-    renderer.Render(camera, options, &stats);
+    const Image8 image = renderer.Render(camera, options, &stats);
+    for (size_t i = 3; i < image.pixels.size(); i += 4) row.covered += image.pixels[i] > 0 ? 1.0 / cameras.size() : 0;
     ms.push_back(stats.frame_ms);
     traversal.push_back(stats.traversal_ms);
     row.billboards += double(stats.billboards) / double(cameras.size());
@@ -46,6 +63,11 @@ Row Measure(TreeRenderer& renderer, const std::vector<View>& cameras, const Tree
   std::sort(traversal.begin(), traversal.end());
   row.median_ms = ms[ms.size() / 2];
   row.traversal_ms = traversal[traversal.size() / 2];
+  // Counted apart: the query's own cost stays out of the timings.
+  row.fragments = MeanFragments(renderer, cameras, options);
+  TreeRenderOptions untrimmed = options;
+  untrimmed.trim_quads = false;
+  row.untrimmed_fragments = MeanFragments(renderer, cameras, untrimmed);
   return row;
 }
 
@@ -87,13 +109,21 @@ int main(int argc, char** argv) {
       rows.push_back(Measure(renderer, cameras, options,
                              Str("level ", level, level + 1 == int(asset.levels.size()) ? " (finest)" : "")));
     }
-    for (double factor : {1.0, 2.0, 4.0, 8.0, 16.0})
+    TreeRenderOptions finest;
+    finest.lod.forced_level = int(asset.levels.size()) - 1;
+    for (double factor : {1.0, 2.0, 3.0, 4.0, 8.0, 16.0}) {
+      if (factor > 1)  // what the LOD saves at this distance
+        rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), finest, Str("finest at ", factor, "x")));
       rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), {}, Str("LOD at ", factor, "x distance")));
-    std::printf("%-22s %8s %12s %10s %12s %14s\n", "frames", "levels", "cells", "billboards", "median ms",
-                "traversal ms");
+    }
+    std::printf("%-22s %8s %10s %10s %10s %12s %11s %11s %11s %9s\n", "frames", "levels", "cells", "billboards",
+                "median ms", "traversal ms", "fragments", "untrimmed", "covered px", "overdraw");
     for (const Row& r : rows)
-      std::printf("%-22s %4d-%-3d %12.0f %10.0f %12.2f %14.2f\n", r.name.c_str(), r.min_level, r.max_level, r.cells,
-                  r.billboards, r.median_ms, r.traversal_ms);
+      std::printf("%-22s %4d-%-3d %10.0f %10.0f %10.2f %12.2f %11.0f %11.0f %11.0f %9.2f\n", r.name.c_str(),
+                  r.min_level, r.max_level, r.cells, r.billboards, r.median_ms, r.traversal_ms, r.fragments,
+                  r.untrimmed_fragments, r.covered, r.covered > 0 ? r.fragments / r.covered : 0.0);
+    if (!rows.empty() && rows[0].fragments < 0)
+      std::printf("(fragments: -1, %s lacks GL_ARB_pipeline_statistics_query)\n", context.renderer().c_str());
     std::printf("\nbillboards before pruning per level:");
     for (const VtreeLevel& level : asset.levels)
       std::printf(" %llu/%zu", static_cast<unsigned long long>(level.billboards_before_pruning),

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "render/alpha_extent.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
 #include "render/offscreen_render.h"
@@ -19,10 +20,14 @@ constexpr const char* kVertexHeader = R"(#version 430 core
 layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side (asset frame)
 layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // packed tile pairs
 layout(std430, binding = 2) readonly buffer Frame { uvec4 frame[]; };           // cell, A, B, 0
+layout(std430, binding = 3) readonly buffer AlphaExtents { uint extents[]; };   // per tile (AlphaExtent::Packed)
 )";
 
 constexpr const char* kVertexMain = R"(
 uniform vec3 uCameraRight, uCameraUp;  // world directions of image +X and -Y
+uniform vec3 uCameraForward, uEye;     // image +Z (world), the camera centre
+uniform int uTexels;                   // billboard side n
+uniform int uTrimQuads;                // quads bound the alpha extents (TreeRenderOptions::trim_quads)
 uniform vec3 uRight[2], uUp[2];        // the two input views' billboard axes (world)
 uniform float uScale;                  // billboard side / cell edge
 uniform mat3 uModelRotation;           // the instance: world = T + s * R * asset
@@ -46,24 +51,56 @@ uint Tiles(uint b) {
   return colour | (alpha << 16u);
 }
 
-void main() {
-  uvec4 record = frame[gl_InstanceID];
-  vec4 cell = cells[record.x];
-  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * cell.xyz);
-  float side = uScale * cell.w * uModelScale;
-  // Half extents on the camera axes that hold both input views' squares (5% for perspective).
+// Half extents on the camera axes that hold both input views' whole squares (5% for perspective).
+vec4 SquareBounds(float side) {
   vec2 half_extent = vec2(0.0);
   for (int k = 0; k < 2; ++k) {
     half_extent = max(half_extent, vec2(abs(dot(uRight[k], uCameraRight)) + abs(dot(uUp[k], uCameraRight)),
                                         abs(dot(uRight[k], uCameraUp)) + abs(dot(uUp[k], uCameraUp))));
   }
   half_extent *= 0.5 * side * 1.05;
-  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
-  vWorld = centre + corner.x * half_extent.x * uCameraRight + corner.y * half_extent.y * uCameraUp;
-  vCell = vec4(centre, side);
-  vLevel = int(round(log2(uRootSize / cell.w)));
+  return vec4(-half_extent, half_extent);
+}
+
+// The bounds, on the quad's plane (through the centre, facing the camera), of what the eye sees of
+// each present view's square where its alpha can be non-zero: the trimmed rectangles' corners
+// projected from the eye, which is exactly where the fragment shader's rays meet them. The
+// whole squares' bounds when a corner lies behind the eye's plane.
+vec4 TrimmedBounds(vec3 centre, float side, uvec3 tiles) {
+  float centre_depth = dot(centre - uEye, uCameraForward);
+  vec2 lo = vec2(1e30), hi = vec2(-1e30);
+  for (int k = 0; k < 2; ++k) {
+    if ((tiles.z & (1u << k)) == 0u) continue;
+    uint e = extents[(k == 0 ? tiles.x : tiles.y) >> 16];
+    vec4 st = vec4(e & 0xffu, (e >> 8) & 0xffu, (e >> 16) & 0xffu, e >> 24) / (2.0 * float(uTexels));
+    for (int c = 0; c < 4; ++c) {
+      vec2 corner = vec2((c & 1) != 0 ? st.z : st.x, (c & 2) != 0 ? st.w : st.y);
+      vec3 p = centre + side * ((corner.x - 0.5) * uRight[k] + (0.5 - corner.y) * uUp[k]);
+      float depth = dot(p - uEye, uCameraForward);
+      if (depth <= 1e-3 * centre_depth) return SquareBounds(side);
+      vec3 q = uEye + (p - uEye) * (centre_depth / depth) - centre;
+      vec2 xy = vec2(dot(q, uCameraRight), dot(q, uCameraUp));
+      lo = min(lo, xy), hi = max(hi, xy);
+    }
+  }
+  float margin = 1e-3 * side;  // float rounding; the filter already reaches zero at the extent
+  return vec4(lo - margin, hi + margin);
+}
+
+void main() {
+  uvec4 record = frame[gl_InstanceID];
+  vec4 cell = cells[record.x];
+  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * cell.xyz);
+  float side = uScale * cell.w * uModelScale;
   uint mask = (record.y != 0xffffffffu ? 1u : 0u) | (record.z != 0xffffffffu ? 2u : 0u);
   vTiles = uvec3((mask & 1u) != 0u ? Tiles(record.y) : 0u, (mask & 2u) != 0u ? Tiles(record.z) : 0u, mask);
+  vec4 bounds = uTrimQuads != 0 && dot(centre - uEye, uCameraForward) > 0.0 ? TrimmedBounds(centre, side, vTiles)
+                                                                             : SquareBounds(side);
+  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+  vec2 xy = mix(bounds.xy, bounds.zw, corner);
+  vWorld = centre + xy.x * uCameraRight + xy.y * uCameraUp;
+  vCell = vec4(centre, side);
+  vLevel = int(round(log2(uRootSize / cell.w)));
   gl_Position = ProjectToClip(vWorld);
 }
 )";
@@ -188,6 +225,12 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   atlas_ = GlTexture::Dxt5(int(atlas.width), int(atlas.height), atlas.dxt5,
                            "render: uploading the DXT5 atlas (needs GL_EXT_texture_compression_s3tc)");
   atlas_bytes_ = atlas.dxt5.size();
+  const std::vector<AlphaExtent> extents = AlphaTileExtents(atlas, asset.texels);
+  std::vector<uint32_t> packed_extents(extents.size());
+  empty_alpha_tiles_.resize(extents.size());
+  for (size_t tile = 0; tile < extents.size(); ++tile)
+    packed_extents[tile] = extents[tile].Packed(), empty_alpha_tiles_[tile] = extents[tile].Empty();
+  alpha_extents_ = GlBuffer(packed_extents.data(), packed_extents.size() * sizeof(uint32_t), 16);
 
   program_.Set("uAtlas", 0);
   program_.Set("uTexels", asset.texels);
@@ -207,7 +250,7 @@ double TreeRenderer::BoundingRadius(double billboard_scale) const {
 }
 
 GpuMemory TreeRenderer::GpuBytes() const {
-  return {cells_.bytes() + billboards_.bytes() + records_.capacity(), atlas_bytes_};
+  return {cells_.bytes() + billboards_.bytes() + alpha_extents_.bytes() + records_.capacity(), atlas_bytes_};
 }
 
 FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options,
@@ -225,10 +268,18 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
   TraverseBackToFront(index_, traversal_camera, options.lod, texels_, &cells, lod_state);
   records->clear();
   const bool two = stats.views.second != stats.views.first && stats.views.second_weight > 0;
+  // A billboard whose alpha tile is 0 everywhere draws nothing (when trimming; else it is drawn
+  // to show what that costs).
+  const auto drawn = [&](uint32_t billboard) {
+    return billboard != OctreeIndex::kNone &&
+                   !(options.trim_quads && empty_alpha_tiles_[index_.Billboard(billboard).alpha])
+               ? billboard
+               : OctreeIndex::kNone;
+  };
   for (uint32_t cell : cells) {
-    const uint32_t a = index_.FindBillboard(cell, uint16_t(stats.views.first));
-    const uint32_t b = two ? index_.FindBillboard(cell, uint16_t(stats.views.second)) : OctreeIndex::kNone;
-    if (a == OctreeIndex::kNone && b == OctreeIndex::kNone) continue;  // pruned in both views
+    const uint32_t a = drawn(index_.FindBillboard(cell, uint16_t(stats.views.first)));
+    const uint32_t b = two ? drawn(index_.FindBillboard(cell, uint16_t(stats.views.second))) : OctreeIndex::kNone;
+    if (a == OctreeIndex::kNone && b == OctreeIndex::kNone) continue;  // pruned or empty in both views
     records->push_back({cell, a, b, 0});
     stats.billboards += (a != OctreeIndex::kNone) + (b != OctreeIndex::kNone);
     const int level = index_.LevelOf(cell);
@@ -263,6 +314,8 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     const Eigen::Matrix3d rotation = camera.pose.rotation.toRotationMatrix();
     program_.Set("uCameraRight", Eigen::Vector3f(rotation.row(0).transpose().cast<float>()));
     program_.Set("uCameraUp", Eigen::Vector3f((-rotation.row(1)).transpose().cast<float>()));
+    program_.Set("uCameraForward", Eigen::Vector3f(rotation.row(2).transpose().cast<float>()));
+    program_.Set("uTrimQuads", options.trim_quads ? 1 : 0);
     program_.Set("uEye", Eigen::Vector3f(eye.cast<float>()));
     program_.Set("uScale", float(options.billboard_scale));
     program_.Set("uModelRotation", Eigen::Matrix3f(draw.model.Rotation().cast<float>()));
@@ -285,6 +338,7 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, billboards_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, records_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, alpha_extents_.id());
     atlas_.Bind(0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

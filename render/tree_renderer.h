@@ -9,7 +9,8 @@
 //
 // Geometry: a cell's billboard for input view v is the square of side `billboard_scale` x cell
 // edge through the cell centre parallel to v's image plane, exactly what reconstruct textured.
-// The quad we rasterize faces the current camera and bounds both squares; the fragment shader
+// The quad we rasterize faces the current camera and bounds both squares, trimmed to where their
+// alpha tiles can be non-zero (render/alpha_extent.h); the fragment shader
 // intersects the pixel's ray with each square's plane, so each texture is seen exactly as
 // oriented like its input view (from an input camera the image is the photo's billboard
 // decomposition, pixel-exactly). RGB comes from the tile `colour`, A from the tile `alpha`,
@@ -56,6 +57,8 @@ struct TreeRenderOptions {
   bool tint_levels = false;        // colour each billboard by its octree level (LOD figures)
   bool nearest_view_only = false;  // draw only the nearest input view's billboards (to see what the blend adds)
   bool count_fragments = false;    // FrameStats::fragments, where the driver can count them (FragmentCounter)
+  bool trim_quads = true;          // each quad bounds only where its billboards' alpha can be non-zero, and billboards
+                           // that are 0 everywhere are skipped (AlphaTileExtents): the same image, fewer fragments
   void Check() const;
 };
 
@@ -70,7 +73,7 @@ struct TreeDraw {
 
 // Bytes the renderer keeps on the GPU for one asset.
 struct GpuMemory {
-  size_t buffers = 0;  // cells, billboard records and the per-frame record buffer
+  size_t buffers = 0;  // cells, billboard records, alpha extents and the per-frame record buffer
   size_t atlas = 0;    // DXT5 texture
   size_t Total() const { return buffers + atlas; }
 };
@@ -119,10 +122,12 @@ class TreeRenderer {
   double root_size_;
   size_t atlas_bytes_ = 0;
   ShaderProgram program_;
-  GlBuffer cells_;          // centre, side per cell (vec4)
-  GlBuffer billboards_;     // (colour, alpha) tile pairs, bit-packed
-  GlStreamBuffer records_;  // the frame's (cell, billboard A, billboard B, 0)
-  GlTexture atlas_;         // DXT5
+  GlBuffer cells_;                       // centre, side per cell (vec4)
+  GlBuffer billboards_;                  // (colour, alpha) tile pairs, bit-packed
+  GlBuffer alpha_extents_;               // per atlas tile, AlphaExtent::Packed
+  std::vector<bool> empty_alpha_tiles_;  // per atlas tile: alpha 0 everywhere
+  GlStreamBuffer records_;               // the frame's (cell, billboard A, billboard B, 0)
+  GlTexture atlas_;                      // DXT5
   GlVertexArray vertex_array_;
   std::vector<uint8_t> lod_state_;  // per cell: refined in the previous frame
   std::unique_ptr<Framebuffer> target_;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) in build-fuzz/ and runs each of them:
 # the .vtree asset reader and the COLMAP model readers (text and binary).
-#   scripts/fuzz.sh [SECONDS per target]   (default 60; CI runs 60 for the asset reader, 30 for COLMAP)
+#   scripts/fuzz.sh [SECONDS per target]   (default 60; CI runs 40 for the asset reader, 20 for COLMAP)
 # Installs clang and its sanitizer runtimes from Debian when they are missing.
 set -euo pipefail
 seconds="${1:-60}"

@@ -221,6 +221,85 @@ TEST(TreeRenderer, CountsFragmentsWhereTheDriverCan) {
   EXPECT_LE(stats.fragments, int64_t(stats.cells) * 64 * 64);
 }
 
+int DrawnPixels(const Image8& image) {
+  int drawn = 0;
+  for (size_t i = 3; i < image.pixels.size(); i += 4) drawn += image.pixels[i] > 0;
+  return drawn;
+}
+
+// Quads trimmed to their alpha's extent, and billboards whose alpha is 0 everywhere left out,
+// change which fragments run, never a pixel: the scene's billboards are opaque in their top half
+// (tile 1) or nowhere (a third tile, 2, for every third billboard).
+TEST(TreeRenderer, TrimmedQuadsDrawTheSameImageWithFewerFragments) {
+  GlContext context;
+  Scene scene = MakeScene(64);
+  VtreeAsset& asset = scene.asset;
+  asset.atlas.width = 12, asset.atlas.tiles_per_row = 3, asset.atlas.tile_count = 3;
+  std::vector<uint8_t> blocks;
+  for (int opaque_rows : {4, 2, 0}) {
+    const auto block = Dxt5Block(opaque_rows);
+    blocks.insert(blocks.end(), block.begin(), block.end());
+  }
+  asset.atlas.dxt5 = blocks;  // one row of three blocks
+  int n = 0;
+  for (auto& level : asset.levels)
+    for (auto& b : level.billboards) b.alpha = uint16_t(++n % 3 == 0 ? 2 : 1);
+  TreeRenderer renderer(asset);
+  TreeRenderOptions trimmed, full;
+  trimmed.count_fragments = full.count_fragments = true;
+  full.trim_quads = false;
+  const std::vector<View> cameras = {scene.cameras[0], scene.cameras[3],
+                                     MakeCamera(Eigen::Vector3d(5 * std::cos(0.3), 5 * std::sin(0.3), 2.0), 64),
+                                     MakeCamera(Eigen::Vector3d(-1.0, 2.5, 5.0), 64),   // from above
+                                     MakeCamera(Eigen::Vector3d(2.2, -2.0, 1.2), 64)};  // close
+  int64_t trimmed_fragments = 0, full_fragments = 0;
+  for (size_t c = 0; c < cameras.size(); ++c) {
+    FrameStats a, b;
+    const Image8 with = renderer.Render(cameras[c], trimmed, &a), without = renderer.Render(cameras[c], full, &b);
+    EXPECT_GT(DrawnPixels(with), 100) << "camera " << c;
+    EXPECT_TRUE(with.pixels == without.pixels) << "camera " << c;
+    EXPECT_LT(a.billboards, b.billboards) << "camera " << c;
+    if (FragmentCounter::Available()) {
+      EXPECT_LT(a.fragments, b.fragments) << "camera " << c;
+      trimmed_fragments += a.fragments, full_fragments += b.fragments;
+    }
+  }
+  // Measured (llvmpipe): 36-89 % per camera (least from above, where the two views' opaque halves
+  // lie apart), 63 % in all; the opaque top half is half of each square.
+  if (FragmentCounter::Available())
+    EXPECT_LT(trimmed_fragments, 0.75 * full_fragments) << trimmed_fragments << " of " << full_fragments;
+}
+
+// One opaque billboard seen from its own input view: the trimmed quad is the square's image, so
+// the fragments shaded are the pixels it covers, give or take its edge.
+TEST(TreeRenderer, FragmentsOfOneOpaqueSquareAreItsPixels) {
+  GlContext context;
+  constexpr int kSize = 96;
+  Scene scene = MakeScene(kSize);
+  VtreeAsset& asset = scene.asset;
+  asset.levels.resize(1);
+  asset.levels[0].billboards.clear();
+  for (uint16_t v = 0; v < 8; ++v) asset.levels[0].billboards.push_back({0, v, 0, 0});  // tile 0: opaque
+  TreeRenderer renderer(asset);
+  TreeRenderOptions options;
+  options.count_fragments = true;
+  FrameStats stats;
+  const Image8 image = renderer.Render(scene.cameras[0], options, &stats);
+  if (!FragmentCounter::Available()) GTEST_SKIP() << context.renderer() << " lacks GL_ARB_pipeline_statistics_query";
+  const int drawn = DrawnPixels(image);
+  EXPECT_EQ(stats.billboards, 1u);
+  EXPECT_GT(drawn, 1000);
+  EXPECT_GE(stats.fragments, drawn);
+  // llvmpipe counts whole 4 x 4 blocks (other drivers pixels or 2 x 2 quads): at most the blocks
+  // that the square's side touches, one more each way.
+  const int blocks = int(std::sqrt(double(drawn)) / 4) + 2;
+  EXPECT_LE(stats.fragments, 16 * blocks * blocks) << stats.fragments << " for " << drawn;
+  const int64_t trimmed = stats.fragments;
+  options.trim_quads = false;  // 5 % wider each way
+  renderer.Render(scene.cameras[0], options, &stats);
+  EXPECT_GE(stats.fragments, trimmed);
+}
+
 TEST(TreeRenderer, TransparentWhereNothingIsAndBackgroundIsComposited) {
   GlContext context;
   const Scene scene = MakeScene(48);
