@@ -23,9 +23,7 @@ struct AlphaExtent {
   uint8_t lo_s = 0, lo_t = 0, hi_s = 0, hi_t = 0;
   bool Empty() const { return hi_s <= lo_s; }
   // lo_s | lo_t << 8 | hi_s << 16 | hi_t << 24, as the renderer's shader reads it.
-  uint32_t Packed() const {
-    return uint32_t(lo_s) | uint32_t(lo_t) << 8 | uint32_t(hi_s) << 16 | uint32_t(hi_t) << 24;
-  }
+  uint32_t Packed() const { return uint32_t(lo_s) | uint32_t(lo_t) << 8 | uint32_t(hi_s) << 16 | uint32_t(hi_t) << 24; }
 };
 
 // Per atlas tile (index = tile), from the atlas's DXT5 blocks; `texels` is the billboard side n

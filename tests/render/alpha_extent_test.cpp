@@ -70,7 +70,7 @@ TEST(AlphaTileExtents, SixValueModeHasAnExplicitZeroAndInterpolantsCountAsNonZer
 
 TEST(AlphaTileExtents, SmallerBillboardsThanTheirTilesAndBadAtlasesAreNamed) {
   std::array<int, 16> codes{};
-  codes.fill(1);       // a1 = 0
+  codes.fill(1);         // a1 = 0
   codes[3 * 4 + 3] = 0;  // texel (3, 3): a0 = 90, outside a 3-texel billboard
   codes[0] = 0;
   const VtreeAtlas atlas = OneRowAtlas({AlphaBlock(90, 0, codes)});
