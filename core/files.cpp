@@ -22,6 +22,7 @@ fs::path TemporarySibling(const fs::path& path, std::string_view tag) {
 }  // namespace
 
 void WriteFileAtomic(const fs::path& path, std::string_view bytes) {
+  const auto writing = HoldOffInterruptCleanup();
   if (!path.parent_path().empty()) fs::create_directories(path.parent_path());
   const fs::path temporary = TemporarySibling(path, "tmp");
   {
@@ -80,6 +81,7 @@ StagedDirectory::StagedDirectory(fs::path final_path, bool force) : final_(std::
   CheckCanReplaceFolder(final_, force);
   RemoveStaleStaging(final_);
   staging_ = TemporarySibling(final_, "partial");
+  const auto writing = HoldOffInterruptCleanup();
   std::error_code error;
   fs::remove_all(staging_, error);
   RemoveOnInterrupt(staging_);

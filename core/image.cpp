@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/interrupt_cleanup.h"
 #include "core/image_size_guard.h"
 #include "core/srgb.h"
 
@@ -45,6 +46,7 @@ Image<T> ConvertChannels(const Image<T>& in, int channels, T opaque) {
 template <typename T>
 void WriteWithOiio(const fs::path& path, const Image<T>& image, TypeDesc type) {
   if (image.empty()) Fail(path.string(), ": refusing to write an empty image");
+  const auto writing = HoldOffInterruptCleanup();
   if (!path.parent_path().empty()) fs::create_directories(path.parent_path());
   // Keep the extension on the temporary name: OpenImageIO picks the format from it.
   const fs::path temporary =

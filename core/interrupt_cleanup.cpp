@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <mutex>
+#include <shared_mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,6 +28,12 @@ Registry& TheRegistry() {
   return registry;
 }
 
+// Writers hold it shared; the cleanup takes it exclusively and keeps it until the process ends.
+std::shared_mutex& TheWriteGate() {
+  static std::shared_mutex gate;
+  return gate;
+}
+
 // The self-pipe: the handler writes the signal number, the watcher thread reads it.
 int g_signal_pipe[2] = {-1, -1};
 
@@ -38,12 +45,13 @@ extern "C" void OnTerminatingSignal(int signal_number) {
 }
 
 void RemoveRegisteredAndReraise(int signal_number) {
+  // Never released: the writers stay parked until the signal below ends the process.
+  static std::unique_lock<std::shared_mutex> no_more_writes;
+  no_more_writes = std::unique_lock(TheWriteGate());
   {
     std::lock_guard lock(TheRegistry().mutex);
     for (const fs::path& path : TheRegistry().paths) {
       std::error_code ignored;
-      // Twice: a worker thread may still be creating files inside while the first pass runs.
-      fs::remove_all(path, ignored);
       fs::remove_all(path, ignored);
     }
     TheRegistry().paths.clear();
@@ -92,6 +100,8 @@ void InstallInterruptCleanup() {
     ::sigaction(signal_number, &action, nullptr);
   }
 }
+
+std::shared_lock<std::shared_mutex> HoldOffInterruptCleanup() { return std::shared_lock(TheWriteGate()); }
 
 void RemoveOnInterrupt(const fs::path& path) {
   std::lock_guard lock(TheRegistry().mutex);

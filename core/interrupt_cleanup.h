@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <shared_mutex>
 
 namespace voltree {
 
@@ -19,6 +20,11 @@ void InstallInterruptCleanup();
 // committed or removed. Thread-safe.
 void RemoveOnInterrupt(const std::filesystem::path& path);
 void ForgetOnInterrupt(const std::filesystem::path& path);
+
+// Held by a thread while it creates a file or folder: the cleanup first waits for every write in
+// flight and then lets no new one start, so that no worker can recreate a folder it has just
+// removed (a frame written a moment after the signal would otherwise be left behind).
+[[nodiscard]] std::shared_lock<std::shared_mutex> HoldOffInterruptCleanup();
 
 // A staging sibling's name says which process built it (".X.partial-<pid>", ".X.old-<pid>",
 // ".X.tmp-<pid>"); removes those of `final_path` whose process is gone, left by a run that was

@@ -266,8 +266,9 @@ TEST(TreeRenderer, TrimmedQuadsDrawTheSameImageWithFewerFragments) {
   }
   // Measured (llvmpipe): 36-89 % per camera (least from above, where the two views' opaque halves
   // lie apart), 63 % in all; the opaque top half is half of each square.
-  if (FragmentCounter::Available())
+  if (FragmentCounter::Available()) {
     EXPECT_LT(trimmed_fragments, 0.75 * full_fragments) << trimmed_fragments << " of " << full_fragments;
+  }
 }
 
 // One opaque billboard seen from its own input view: the trimmed quad is the square's image, so
