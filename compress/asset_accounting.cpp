@@ -38,16 +38,10 @@ AssetBytes CountAssetBytes(const VtreeAsset& asset, uint64_t file_bytes) {
                               std::bit_width(std::max(asset.alpha_codebook_size, 1u) - 1);
   bytes.vq_indices = (billboards * index_bits + 7) / 8;
   bytes.gpu_atlas = asset.atlas.dxt5.size();
-  // Cell and view of a billboard are looked up on the CPU (OctreeIndex), so the GPU holds only the
-  // billboard's two tiles, packed as narrow as the largest tiles used allow, and a vec4 per cell
-  // (render/tree_renderer.cpp).
-  uint32_t max_colour = 0, max_alpha = 0;
-  for (const auto& level : asset.levels)
-    for (const auto& b : level.billboards)
-      max_colour = std::max<uint32_t>(max_colour, b.colour), max_alpha = std::max<uint32_t>(max_alpha, b.alpha);
-  const uint64_t pair_bits = std::bit_width(max_colour) + std::bit_width(max_alpha);
-  bytes.gpu_billboards = ((billboards * pair_bits + 31) / 32 + 1) * sizeof(uint32_t);
-  bytes.gpu_cells = asset.CellCount() * 4 * sizeof(float);
+  // The octree and its billboards stay on the CPU: the GPU holds the atlas, the tiles' alpha
+  // extents and the records of the frame being drawn (render/tree_renderer.h).
+  bytes.gpu_alpha_extents = uint64_t(asset.atlas.tile_count) * sizeof(uint32_t);
+  bytes.gpu_frame_records = uint64_t(asset.LeafCellCount()) * 4 * sizeof(uint32_t);
   bytes.on_disk = file_bytes;
   return bytes;
 }
@@ -80,7 +74,8 @@ std::string DescribeAsset(const VtreeAsset& asset, const AssetBytes& bytes) {
   out += Str("  GPU textures (DXT5 atlas)    ", Size(bytes.GpuTextures()), "  ",
              Ratio(bytes.uncompressed_textures, bytes.GpuTextures()), "\n");
   out += Str("  GPU resident total           ", Size(bytes.Gpu()), "  (atlas ", Size(bytes.gpu_atlas),
-             ", billboard records ", Size(bytes.gpu_billboards), ", cells ", Size(bytes.gpu_cells), ")\n");
+             ", alpha extents ", Size(bytes.gpu_alpha_extents), ", one frame's cell records at most ",
+             Size(bytes.gpu_frame_records), ": ", asset.LeafCellCount(), " leaf cells)\n");
   if (bytes.on_disk) out += Str("  on disk                      ", Size(bytes.on_disk), "\n");
   return out;
 }

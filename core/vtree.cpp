@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <tuple>
+#include <unordered_set>
 
 #include "core/bit_stream.h"
 #include "core/byte_reader.h"
@@ -531,6 +532,20 @@ size_t VtreeAsset::CellCount() const {
   size_t count = 0;
   for (const auto& level : levels) count += level.cells.size();
   return count;
+}
+
+size_t VtreeAsset::LeafCellCount() const {
+  const auto key = [](uint32_t i, uint32_t j, uint32_t k) {
+    return uint64_t(i) | uint64_t(j) << 21 | uint64_t(k) << 42;
+  };
+  size_t leaves = levels.empty() ? 0 : levels.back().cells.size();
+  const uint32_t b = uint32_t(std::max(branching, 1));
+  for (size_t l = 0; l + 1 < levels.size(); ++l) {
+    std::unordered_set<uint64_t> parents;  // lookups only
+    for (const auto& c : levels[l + 1].cells) parents.insert(key(c[0] / b, c[1] / b, c[2] / b));
+    for (const auto& c : levels[l].cells) leaves += !parents.count(key(c[0], c[1], c[2]));
+  }
+  return leaves;
 }
 
 std::string SerializeAsset(const VtreeAsset& asset, const VtreeWriteOptions& options) {

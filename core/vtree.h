@@ -96,6 +96,9 @@ struct VtreeAsset {
 
   size_t BillboardCount() const;
   size_t CellCount() const;
+  // Cells with no child in the next level: the most cells one frame can draw, since a frame draws
+  // a cut of the octree and no cut has more cells than there are leaves.
+  size_t LeafCellCount() const;
 };
 
 struct VtreeWriteOptions {

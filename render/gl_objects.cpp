@@ -24,7 +24,7 @@ GlBuffer::GlBuffer(const void* data, size_t bytes, size_t min_bytes)
 
 void GlStreamBuffer::Upload(const void* data, size_t bytes) {
   if (bytes > capacity_) {
-    capacity_ = std::max(bytes, 2 * capacity_);
+    capacity_ = std::max(bytes, std::min(2 * capacity_, most_bytes_));
     name_ = GlBufferName::Create();
     glNamedBufferData(id(), static_cast<GLsizeiptr>(capacity_), nullptr, GL_STREAM_DRAW);
   }

@@ -61,10 +61,12 @@ class GlBuffer {
   size_t bytes_ = 0;
 };
 
-// A buffer rewritten every frame (GL_STREAM_DRAW). It grows, at least doubling, when a frame needs
-// more and never shrinks, so frames and instances reuse it.
+// A buffer rewritten every frame (GL_STREAM_DRAW). It grows, at least doubling but never beyond
+// `most_bytes` (what its owner knows a frame can need), when a frame needs more, and never shrinks,
+// so frames and instances reuse it.
 class GlStreamBuffer {
  public:
+  explicit GlStreamBuffer(size_t most_bytes = SIZE_MAX) : most_bytes_(most_bytes) {}
   void Upload(const void* data, size_t bytes);
   GLuint id() const { return name_.id(); }
   size_t capacity() const { return capacity_; }
@@ -72,6 +74,7 @@ class GlStreamBuffer {
  private:
   GlBufferName name_;
   size_t capacity_ = 0;
+  size_t most_bytes_;
 };
 
 class GlVertexArray {

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "render/alpha_extent.h"
+#include "render/frame_record.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
 #include "render/offscreen_render.h"
@@ -15,12 +16,10 @@
 namespace voltree {
 namespace {
 
-// The vertex shader is kVertexHeader + kProjectionGlsl + kVertexMain.
+// The vertex shader is kVertexHeader + the level count + kProjectionGlsl + kVertexMain.
 constexpr const char* kVertexHeader = R"(#version 430 core
-layout(std430, binding = 0) readonly buffer Cells { vec4 cells[]; };            // centre, side (asset frame)
-layout(std430, binding = 1) readonly buffer Billboards { uint billboards[]; };  // packed tile pairs
-layout(std430, binding = 2) readonly buffer Frame { uvec4 frame[]; };           // cell, A, B, 0
-layout(std430, binding = 3) readonly buffer AlphaExtents { uint extents[]; };   // per tile (AlphaExtent::Packed)
+layout(std430, binding = 0) readonly buffer Frame { uvec4 frame[]; };          // FrameRecord, one per cell drawn
+layout(std430, binding = 1) readonly buffer AlphaExtents { uint extents[]; };  // per tile (AlphaExtent::Packed)
 )";
 
 constexpr const char* kVertexMain = R"(
@@ -33,23 +32,12 @@ uniform float uScale;                  // billboard side / cell edge
 uniform mat3 uModelRotation;           // the instance: world = T + s * R * asset
 uniform vec3 uModelTranslation;
 uniform float uModelScale;
-uniform float uRootSize;               // root cube edge (asset frame), for the level of a cell
+uniform vec3 uOrigin;                  // the root cube's corner (asset frame)
+uniform float uCellSize[kMaxRenderedLevels];  // cell edge per level (asset frame)
 out vec3 vWorld;
 flat out vec4 vCell;    // world centre, world side
 flat out uvec3 vTiles;  // tiles of A, tiles of B, presence mask
 flat out int vLevel;
-uniform uint uColourBits, uAlphaBits;  // bits of a billboard's colour and alpha tile in the packed buffer
-
-// Billboard b's tiles as colour | alpha << 16: its colour and alpha fields, least significant bit
-// first, start at bit b * (uColourBits + uAlphaBits) of the buffer and may span two words.
-uint Tiles(uint b) {
-  uint bits = uColourBits + uAlphaBits, at = b * bits, word = at >> 5u, shift = at & 31u;
-  uint value = billboards[word] >> shift;
-  if (shift + bits > 32u) value |= billboards[word + 1u] << (32u - shift);
-  value &= bits < 32u ? (1u << bits) - 1u : 0xffffffffu;
-  uint colour = value & ((1u << uColourBits) - 1u), alpha = value >> uColourBits;  // each at most 16 bits
-  return colour | (alpha << 16u);
-}
 
 // Half extents on the camera axes that hold both input views' whole squares (5% for perspective).
 vec4 SquareBounds(float side) {
@@ -89,18 +77,19 @@ vec4 TrimmedBounds(vec3 centre, float side, uvec3 tiles) {
 
 void main() {
   uvec4 record = frame[gl_InstanceID];
-  vec4 cell = cells[record.x];
-  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * cell.xyz);
-  float side = uScale * cell.w * uModelScale;
-  uint mask = (record.y != 0xffffffffu ? 1u : 0u) | (record.z != 0xffffffffu ? 2u : 0u);
-  vTiles = uvec3((mask & 1u) != 0u ? Tiles(record.y) : 0u, (mask & 2u) != 0u ? Tiles(record.z) : 0u, mask);
+  int level = int(record.w & 0xffu);
+  vec3 cell = vec3(record.x & 0x3ffu, (record.x >> 10) & 0x3ffu, record.x >> 20);
+  float edge = uCellSize[level];
+  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * (uOrigin + edge * (cell + 0.5)));
+  float side = uScale * edge * uModelScale;
+  vTiles = uvec3(record.y, record.z, record.w >> 8);
   vec4 bounds = uTrimQuads != 0 && dot(centre - uEye, uCameraForward) > 0.0 ? TrimmedBounds(centre, side, vTiles)
                                                                              : SquareBounds(side);
   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
   vec2 xy = mix(bounds.xy, bounds.zw, corner);
   vWorld = centre + xy.x * uCameraRight + xy.y * uCameraUp;
   vCell = vec4(centre, side);
-  vLevel = int(round(log2(uRootSize / cell.w)));
+  vLevel = level;
   gl_Position = ProjectToClip(vWorld);
 }
 )";
@@ -186,37 +175,19 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   if (views_.empty()) Fail("render: the asset has no input views");
   root_size_ = asset.size;
   centre_ = asset.origin + Eigen::Vector3d::Constant(0.5 * asset.size);
-  program_ = ShaderProgram::Graphics("vtree billboards", std::string(kVertexHeader) + kProjectionGlsl + kVertexMain,
+  program_ = ShaderProgram::Graphics("vtree billboards",
+                                     std::string(kVertexHeader) +
+                                         Str("const int kMaxRenderedLevels = ", kMaxRenderedLevels, ";\n") +
+                                         kProjectionGlsl + kVertexMain,
                                      kFragmentShader);
 
-  std::vector<float> cells(size_t(index_.CellCount()) * 4);
-  for (uint32_t c = 0; c < index_.CellCount(); ++c) {
-    const Eigen::Vector3d& p = index_.Center(c);
-    cells[4 * c] = float(p.x()), cells[4 * c + 1] = float(p.y()), cells[4 * c + 2] = float(p.z());
-    cells[4 * c + 3] = float(index_.CellSize(index_.LevelOf(c)));
-  }
-  // Tile pairs packed as narrow as the tiles used allow (as the .vtree stores them): 9 + 9 bits for
-  // codebooks of 512, not 32.
-  uint32_t max_colour = 0, max_alpha = 0;
+  cell_codes_ = PackCellCoordinates(asset);
+  records_ = GlStreamBuffer(asset.LeafCellCount() * sizeof(FrameRecord));
   for (uint32_t b = 0; b < index_.BillboardCount(); ++b) {
     const VtreeBillboard& record = index_.Billboard(b);
     if (record.colour >= asset.atlas.tile_count || record.alpha >= asset.atlas.tile_count)
       Fail("render: billboard ", b, " names a tile beyond the atlas's ", asset.atlas.tile_count);
-    max_colour = std::max<uint32_t>(max_colour, record.colour), max_alpha = std::max<uint32_t>(max_alpha, record.alpha);
   }
-  const int colour_bits = std::bit_width(max_colour), alpha_bits = std::bit_width(max_alpha);
-  const uint64_t pair_bits = uint64_t(colour_bits + alpha_bits);
-  std::vector<uint32_t> billboards((index_.BillboardCount() * pair_bits + 31) / 32 + 1, 0);
-  for (uint32_t b = 0; b < index_.BillboardCount(); ++b) {
-    const VtreeBillboard& record = index_.Billboard(b);
-    const uint64_t pair = uint64_t(record.colour) | (uint64_t(record.alpha) << colour_bits);
-    const uint64_t at = b * pair_bits;
-    billboards[at / 32] |= uint32_t(pair << (at % 32));
-    if (at % 32 + pair_bits > 32) billboards[at / 32 + 1] |= uint32_t(pair >> (32 - at % 32));
-  }
-  // At least 16 bytes each: a shader storage block is never bound empty.
-  cells_ = GlBuffer(cells.data(), cells.size() * sizeof(float), 16);
-  billboards_ = GlBuffer(billboards.data(), billboards.size() * sizeof(uint32_t), 16);
 
   const VtreeAtlas& atlas = asset.atlas;
   if (atlas.width == 0 || atlas.height == 0 || atlas.width % 4 || atlas.height % 4 ||
@@ -237,9 +208,10 @@ TreeRenderer::TreeRenderer(const VtreeAsset& asset) : views_(asset.views), texel
   program_.Set("uPitch", int(atlas.tile_pitch));
   program_.Set("uTilesPerRow", int(atlas.tiles_per_row));
   program_.Set("uAtlasSize", Eigen::Vector2f(float(atlas.width), float(atlas.height)));
-  program_.Set("uRootSize", float(asset.size));
-  glProgramUniform1ui(program_.id(), program_.Location("uColourBits"), GLuint(colour_bits));
-  glProgramUniform1ui(program_.id(), program_.Location("uAlphaBits"), GLuint(alpha_bits));
+  program_.Set("uOrigin", Eigen::Vector3f(asset.origin.cast<float>()));
+  std::vector<float> cell_sizes(kMaxRenderedLevels, 0.0f);
+  for (int level = 0; level < index_.levels(); ++level) cell_sizes[level] = float(index_.CellSize(level));
+  glProgramUniform1fv(program_.id(), program_.Location("uCellSize"), kMaxRenderedLevels, cell_sizes.data());
 }
 
 double TreeRenderer::BoundingRadius(double billboard_scale) const {
@@ -249,13 +221,10 @@ double TreeRenderer::BoundingRadius(double billboard_scale) const {
   return root_size_ * std::max(0.5 * std::sqrt(3.0), 0.5 * std::sqrt(2.0) * billboard_scale);
 }
 
-GpuMemory TreeRenderer::GpuBytes() const {
-  return {cells_.bytes() + billboards_.bytes() + alpha_extents_.bytes() + records_.capacity(), atlas_bytes_};
-}
+GpuMemory TreeRenderer::GpuBytes() const { return {alpha_extents_.bytes() + records_.capacity(), atlas_bytes_}; }
 
-FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options,
-                              std::vector<std::array<uint32_t, 4>>* records, std::vector<uint8_t>* lod_state,
-                              const InstanceTransform& model) const {
+FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& options, std::vector<FrameRecord>* records,
+                              std::vector<uint8_t>* lod_state, const InstanceTransform& model) const {
   FrameStats stats;
   // The asset's frame: view selection, traversal order and LOD are all computed there.
   const Eigen::Vector3d eye = model.ToAsset(camera.pose.Center());
@@ -276,11 +245,14 @@ FrameStats TreeRenderer::Plan(const View& camera, const TreeRenderOptions& optio
                ? billboard
                : OctreeIndex::kNone;
   };
+  const auto billboard = [&](uint32_t index) {
+    return index != OctreeIndex::kNone ? &index_.Billboard(index) : nullptr;
+  };
   for (uint32_t cell : cells) {
     const uint32_t a = drawn(index_.FindBillboard(cell, uint16_t(stats.views.first)));
     const uint32_t b = two ? drawn(index_.FindBillboard(cell, uint16_t(stats.views.second))) : OctreeIndex::kNone;
     if (a == OctreeIndex::kNone && b == OctreeIndex::kNone) continue;  // pruned or empty in both views
-    records->push_back({cell, a, b, 0});
+    records->push_back(MakeFrameRecord(cell_codes_[cell], index_.LevelOf(cell), billboard(a), billboard(b)));
     stats.billboards += (a != OctreeIndex::kNone) + (b != OctreeIndex::kNone);
     const int level = index_.LevelOf(cell);
     if (stats.cells_per_level.size() <= size_t(level)) stats.cells_per_level.resize(level + 1, 0);
@@ -297,7 +269,7 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
   camera.camera.Check();
   draw.model.Check();
   const auto start = Clock::now();
-  std::vector<std::array<uint32_t, 4>> records;
+  std::vector<FrameRecord> records;
   std::vector<uint8_t>* lod_state = draw.lod_state ? draw.lod_state : options.lod_history ? &lod_state_ : nullptr;
   FrameStats stats = Plan(camera, options, &records, lod_state, draw.model);
   stats.traversal_ms = Ms(start, Clock::now());
@@ -335,10 +307,8 @@ FrameStats TreeRenderer::Draw(const View& camera, const TreeRenderOptions& optio
 
     program_.Use();
     vertex_array_.Bind();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, cells_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, billboards_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, records_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, alpha_extents_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, records_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, alpha_extents_.id());
     atlas_.Bind(0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -1,11 +1,12 @@
 // Draws a .vtree asset with OpenGL (Reche 2004 / Linz 2006 billboard clouds).
 //
-// Built once per asset: the cells of every level (centre, side) and the billboard records
-// (colour tile, alpha tile, bit-packed as narrow as the tiles used allow) as shader storage buffers, the DXT5 atlas as
-// one GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear filtering, no mipmaps: tiles are packed edge to edge). Each
-// frame: the two input views nearest in angle are chosen (SelectViews), a CPU back-to-front traversal picks the cells
-// (TraverseBackToFront, LOD), and one record per cell (cell, billboard of view A, billboard of view B) goes into one
-// buffer drawn by ONE instanced draw call of camera-facing quads.
+// Built once per asset: the DXT5 atlas as one GL_COMPRESSED_RGBA_S3TC_DXT5_EXT texture (linear
+// filtering, no mipmaps: tiles are packed edge to edge) and each tile's alpha extent; the octree
+// and its billboards stay on the CPU. Each frame: the two input views nearest in angle are chosen
+// (SelectViews), a CPU back-to-front traversal picks the cells (TraverseBackToFront, LOD), and one
+// 16-byte record per cell (its coordinates and level, the tiles of its billboards for views A and
+// B: render/frame_record.h) goes into one buffer drawn by ONE instanced draw call of
+// camera-facing quads.
 //
 // Geometry: a cell's billboard for input view v is the square of side `billboard_scale` x cell
 // edge through the cell centre parallel to v's image plane, exactly what reconstruct textured.
@@ -39,6 +40,7 @@
 #include "render/framebuffer.h"
 #include "render/gl_objects.h"
 #include "render/instance_transform.h"
+#include "render/frame_record.h"
 #include "render/lod.h"
 #include "render/offscreen_render.h"
 #include "render/projection.h"
@@ -73,7 +75,7 @@ struct TreeDraw {
 
 // Bytes the renderer keeps on the GPU for one asset.
 struct GpuMemory {
-  size_t buffers = 0;  // cells, billboard records, alpha extents and the per-frame record buffer
+  size_t buffers = 0;  // alpha extents and the frame's records (FrameRecord: 16 bytes per cell drawn)
   size_t atlas = 0;    // DXT5 texture
   size_t Total() const { return buffers + atlas; }
 };
@@ -105,7 +107,7 @@ class TreeRenderer {
 
   // The cells and records of one frame without drawing (what Draw uploads); `lod_state` as in
   // TraverseBackToFront (Draw passes its own when options.lod_history). `model` places the tree.
-  FrameStats Plan(const View& camera, const TreeRenderOptions& options, std::vector<std::array<uint32_t, 4>>* records,
+  FrameStats Plan(const View& camera, const TreeRenderOptions& options, std::vector<FrameRecord>* records,
                   std::vector<uint8_t>* lod_state = nullptr, const InstanceTransform& model = {}) const;
   void ResetLodHistory() { lod_state_.clear(); }
   // Draws into the bound framebuffer (viewport = the camera's image) with ONE draw call. Depth
@@ -122,11 +124,10 @@ class TreeRenderer {
   double root_size_;
   size_t atlas_bytes_ = 0;
   ShaderProgram program_;
-  GlBuffer cells_;                       // centre, side per cell (vec4)
-  GlBuffer billboards_;                  // (colour, alpha) tile pairs, bit-packed
+  std::vector<uint32_t> cell_codes_;     // per cell, its coordinates as FrameRecord packs them
   GlBuffer alpha_extents_;               // per atlas tile, AlphaExtent::Packed
   std::vector<bool> empty_alpha_tiles_;  // per atlas tile: alpha 0 everywhere
-  GlStreamBuffer records_;               // the frame's (cell, billboard A, billboard B, 0)
+  GlStreamBuffer records_;               // the frame's FrameRecords
   GlTexture atlas_;                      // DXT5
   GlVertexArray vertex_array_;
   std::vector<uint8_t> lod_state_;  // per cell: refined in the previous frame

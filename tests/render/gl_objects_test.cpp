@@ -72,5 +72,19 @@ TEST(GlObjects, StreamBufferGrowsByDoublingAndKeepsItsSize) {
   EXPECT_EQ(ReadBuffer(stream.id(), 6), frame);  // the last upload replaced only its first 4 bytes
 }
 
+TEST(GlObjects, StreamBufferDoublesNoFurtherThanItsOwnerSaysAFrameNeeds) {
+  GlContext context;
+  GlStreamBuffer stream(20);
+  const std::vector<uint32_t> frame = {1, 2, 3, 4, 5, 6};
+  stream.Upload(frame.data(), 8);
+  stream.Upload(frame.data(), 12);
+  EXPECT_EQ(stream.capacity(), 16u);
+  stream.Upload(frame.data(), 18);
+  EXPECT_EQ(stream.capacity(), 20u);  // the most, not 32
+  stream.Upload(frame.data(), 24);    // a frame beyond the most still fits
+  EXPECT_EQ(stream.capacity(), 24u);
+  EXPECT_EQ(ReadBuffer(stream.id(), 6), frame);
+}
+
 }  // namespace
 }  // namespace voltree

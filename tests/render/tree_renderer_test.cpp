@@ -325,12 +325,50 @@ TEST(TreeRenderer, BetweenTwoViewsBlendsBoth) {
   // Half-way between views 0 and 1 in azimuth: both weigh about one half.
   const double azimuth = std::numbers::pi / 8;
   const View camera = MakeCamera(Eigen::Vector3d(5 * std::cos(azimuth), 5 * std::sin(azimuth), 2.5), 48);
-  std::vector<std::array<uint32_t, 4>> records;
+  std::vector<FrameRecord> records;
   const FrameStats stats = renderer.Plan(camera, {}, &records);
   EXPECT_NEAR(stats.views.first_weight, 0.5, 0.01);
   EXPECT_TRUE((stats.views.first == 0 && stats.views.second == 1) ||
               (stats.views.first == 1 && stats.views.second == 0));
   EXPECT_EQ(stats.billboards, 2 * stats.cells);
+}
+
+// The GPU holds the atlas, the alpha extents and one frame's records, no table of cells or
+// billboards: each record names its cell by coordinates and level and carries its tiles, and the
+// record buffer never outgrows one record per leaf cell, however the frames are drawn.
+TEST(TreeRenderer, RecordsCarryTheCellAndItsTilesAndTheBuffersStayWithinTheLeaves) {
+  GlContext context;
+  const Scene scene = MakeScene(48);
+  TreeRenderer renderer(scene.asset);
+  const double between_views = 2 * std::numbers::pi * 3.5 / 8;  // both blended views are drawn
+  const View camera = MakeCamera(Eigen::Vector3d(5 * std::cos(between_views), 5 * std::sin(between_views), 2.5), 48);
+  for (int level : {0, 1, 2}) {
+    TreeRenderOptions options;
+    options.lod.forced_level = level;
+    std::vector<FrameRecord> records;
+    renderer.Plan(camera, options, &records);
+    ASSERT_EQ(records.size(), scene.asset.levels[level].cells.size()) << "level " << level;
+    for (const FrameRecord& record : records) {
+      EXPECT_EQ(record[3] & 0xffu, uint32_t(level));
+      EXPECT_EQ(record[3] >> 8, 3u) << "both views have a billboard in every cell";
+      EXPECT_EQ(record[1], 0u | 1u << 16) << "colour tile 0, alpha tile 1";
+      const std::array<uint16_t, 3> cell = {uint16_t(record[0] & 0x3ff), uint16_t(record[0] >> 10 & 0x3ff),
+                                            uint16_t(record[0] >> 20)};
+      const auto& cells = scene.asset.levels[level].cells;
+      EXPECT_NE(std::find(cells.begin(), cells.end(), cell), cells.end()) << "level " << level;
+    }
+  }
+  for (double distance : {5.0, 1.5, 40.0})
+    for (int level : {-1, 2, 1, 2}) {
+      TreeRenderOptions options;
+      options.lod.forced_level = level;
+      renderer.Render(MakeCamera(Eigen::Vector3d(distance, 0.3 * distance, 1.5), 48), options);
+    }
+  const size_t records = scene.asset.LeafCellCount() * sizeof(FrameRecord), extents = 16;  // 2 tiles, bound >= 16 B
+  EXPECT_EQ(scene.asset.LeafCellCount(), 6u);
+  EXPECT_GT(renderer.GpuBytes().buffers, extents);
+  EXPECT_LE(renderer.GpuBytes().buffers, extents + records);
+  EXPECT_EQ(renderer.GpuBytes().atlas, scene.asset.atlas.dxt5.size());
 }
 
 TEST(TreeRenderer, UnpremultiplyRounds) {
