@@ -513,6 +513,44 @@ function DecodeDxt5(atlas) {
   return rgba;
 }
 
+// ---------------------------------------------------------------- alpha extents (render/alpha_extent.cpp)
+
+// Per atlas tile, where its alpha can be non-zero, in half-texel units of the billboard square,
+// packed lo_s | lo_t << 8 | hi_s << 16 | hi_t << 24; 0 (empty) when every texel's alpha is 0. A
+// texel counts as zero only when its DXT5 code is 0 in exact arithmetic, and the extent grows half
+// a texel each side for the clamped bilinear fetch, so the trimmed quad never cuts a visible texel.
+function AlphaTileExtents(atlas, texels) {
+  const { width, dxt5, pitch, tilesPerRow, tileCount } = atlas;
+  const blocksPerRow = width / 4, extents = new Uint32Array(tileCount);
+  const nonZero = (block) => {  // the block's 16 texels, bit t set when texel t can be non-zero
+    const a0 = dxt5[block], a1 = dxt5[block + 1];
+    const zero = [a0 === 0, a1 === 0];
+    for (let code = 2; code < 8; ++code) zero[code] = a0 === 0 && a1 === 0;
+    if (a0 <= a1) zero[6] = true, zero[7] = false;
+    let codes = 0n;
+    for (let i = 0; i < 6; ++i) codes |= BigInt(dxt5[block + 2 + i]) << BigInt(8 * i);
+    let mask = 0;
+    for (let t = 0; t < 16; ++t) if (!zero[Number((codes >> BigInt(3 * t)) & 7n)]) mask |= 1 << t;
+    return mask;
+  };
+  const masks = new Map();  // per block offset
+  for (let tile = 0; tile < tileCount; ++tile) {
+    const x0 = (tile % tilesPerRow) * pitch, y0 = Math.floor(tile / tilesPerRow) * pitch;
+    let minS = texels, maxS = -1, minT = texels, maxT = -1;
+    for (let t = 0; t < texels; ++t)
+      for (let s = 0; s < texels; ++s) {
+        const x = x0 + s, y = y0 + t, block = (Math.floor(y / 4) * blocksPerRow + Math.floor(x / 4)) * 16;
+        if (!masks.has(block)) masks.set(block, nonZero(block));
+        if (!((masks.get(block) >> ((y % 4) * 4 + (x % 4))) & 1)) continue;
+        minS = Math.min(minS, s), maxS = Math.max(maxS, s), minT = Math.min(minT, t), maxT = Math.max(maxT, t);
+      }
+    if (maxS < 0) continue;
+    const lo = (first) => Math.max(0, 2 * first - 1), hi = (last) => Math.min(2 * texels, 2 * last + 3);
+    extents[tile] = (lo(minS) | (lo(minT) << 8) | (hi(maxS) << 16) | (hi(maxT) << 24)) >>> 0;
+  }
+  return extents;
+}
+
 // ---------------------------------------------------------------- shaders (render/projection.cpp, tree_renderer.cpp)
 
 const kProjectionGlsl = `
@@ -532,28 +570,58 @@ vec4 ProjectToClip(vec3 world) {
 const kTreeVertex = `#version 300 es
 precision highp float;
 precision highp int;
-layout(location = 0) in vec4 aCell;   // centre (asset frame), side
-layout(location = 1) in uvec4 aTiles; // tiles of A, tiles of B, presence mask, level
+layout(location = 0) in vec4 aCell;     // centre (asset frame), side
+layout(location = 1) in uvec4 aTiles;   // tiles of A, tiles of B, presence mask, level
+layout(location = 2) in uvec2 aExtents; // alpha extents of A's and B's alpha tiles (AlphaTileExtents)
 ${kProjectionGlsl}
-uniform vec3 uCameraRight, uCameraUp, uRight[2], uUp[2];
+uniform vec3 uCameraRight, uCameraUp, uCameraForward, uEye, uRight[2], uUp[2];
 uniform float uScale, uModelScale;
+uniform int uTexels;
 uniform mat3 uModelRotation;
 uniform vec3 uModelTranslation;
 out vec3 vWorld;
 flat out vec4 vCell;
 flat out uvec3 vTiles;
 flat out int vLevel;
-void main() {
-  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * aCell.xyz);
-  float side = uScale * aCell.w * uModelScale;
+// Half extents on the camera axes that hold both input views' whole squares (5% for perspective).
+vec4 SquareBounds(float side) {
   vec2 half_extent = vec2(0.0);
   for (int k = 0; k < 2; ++k) {
     half_extent = max(half_extent, vec2(abs(dot(uRight[k], uCameraRight)) + abs(dot(uUp[k], uCameraRight)),
                                         abs(dot(uRight[k], uCameraUp)) + abs(dot(uUp[k], uCameraUp))));
   }
   half_extent *= 0.5 * side * 1.05;
-  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
-  vWorld = centre + corner.x * half_extent.x * uCameraRight + corner.y * half_extent.y * uCameraUp;
+  return vec4(-half_extent, half_extent);
+}
+// The present views' alpha extents projected from the eye onto the quad's plane, where the
+// fragment shader's rays meet them; the whole squares' bounds when a corner is behind the eye.
+vec4 TrimmedBounds(vec3 centre, float side, uint mask) {
+  float centre_depth = dot(centre - uEye, uCameraForward);
+  vec2 lo = vec2(1e30), hi = vec2(-1e30);
+  for (int k = 0; k < 2; ++k) {
+    if ((mask & (1u << k)) == 0u) continue;
+    uint e = k == 0 ? aExtents.x : aExtents.y;
+    vec4 st = vec4(e & 0xffu, (e >> 8) & 0xffu, (e >> 16) & 0xffu, e >> 24) / (2.0 * float(uTexels));
+    for (int c = 0; c < 4; ++c) {
+      vec2 corner = vec2((c & 1) != 0 ? st.z : st.x, (c & 2) != 0 ? st.w : st.y);
+      vec3 p = centre + side * ((corner.x - 0.5) * uRight[k] + (0.5 - corner.y) * uUp[k]);
+      float depth = dot(p - uEye, uCameraForward);
+      if (depth <= 1e-3 * centre_depth) return SquareBounds(side);
+      vec3 q = uEye + (p - uEye) * (centre_depth / depth) - centre;
+      vec2 xy = vec2(dot(q, uCameraRight), dot(q, uCameraUp));
+      lo = min(lo, xy), hi = max(hi, xy);
+    }
+  }
+  float margin = 1e-3 * side;
+  return vec4(lo - margin, hi + margin);
+}
+void main() {
+  vec3 centre = uModelTranslation + uModelScale * (uModelRotation * aCell.xyz);
+  float side = uScale * aCell.w * uModelScale;
+  vec4 bounds = dot(centre - uEye, uCameraForward) > 0.0 ? TrimmedBounds(centre, side, aTiles.z) : SquareBounds(side);
+  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+  vec2 xy = mix(bounds.xy, bounds.zw, corner);
+  vWorld = centre + xy.x * uCameraRight + xy.y * uCameraUp;
   vCell = vec4(centre, side);
   vLevel = int(aTiles.w);
   vTiles = aTiles.xyz;
@@ -682,9 +750,11 @@ class TreeRenderer {
                                 [gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE], [gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE]])
       gl.texParameteri(gl.TEXTURE_2D, key, value);
     this.gpuBytes = atlas.dxt5.length * (s3tc ? 1 : 4);
+    this.alphaExtents = AlphaTileExtents(atlas, asset.texels);
     this.vertexArray = gl.createVertexArray();
     this.cellBuffer = gl.createBuffer();
     this.tileBuffer = gl.createBuffer();
+    this.extentBuffer = gl.createBuffer();
     gl.bindVertexArray(this.vertexArray);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.cellBuffer);
     gl.enableVertexAttribArray(0);
@@ -694,6 +764,10 @@ class TreeRenderer {
     gl.enableVertexAttribArray(1);
     gl.vertexAttribIPointer(1, 4, gl.UNSIGNED_INT, 0, 0);
     gl.vertexAttribDivisor(1, 1);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.extentBuffer);
+    gl.enableVertexAttribArray(2);
+    gl.vertexAttribIPointer(2, 2, gl.UNSIGNED_INT, 0, 0);
+    gl.vertexAttribDivisor(2, 1);
     gl.bindVertexArray(null);
     const p = this.program;
     gl.useProgram(p);
@@ -713,13 +787,18 @@ class TreeRenderer {
     const cells = TraverseBackToFront(index, eye, 0.5 * (cam.fx + cam.fy), this.asset.texels, lodState);
     const two = views.second !== views.first && views.secondWeight > 0;
     const cellData = new Float32Array(4 * cells.length), tileData = new Uint32Array(4 * cells.length);
+    const extentData = new Uint32Array(2 * cells.length);
     const stats = { cells: 0, billboards: 0, minLevel: -1, maxLevel: -1, views };
+    const extentOf = (tiles) => (tiles < 0 ? 0 : this.alphaExtents[tiles >>> 16]);
+    // A billboard whose alpha tile is 0 everywhere draws nothing: left out, as render does.
+    const drawn = (tiles) => (tiles >= 0 && extentOf(tiles) !== 0 ? tiles : -1);
     for (const cell of cells) {
-      const a = index.FindTiles(cell, views.first), b = two ? index.FindTiles(cell, views.second) : -1;
+      const a = drawn(index.FindTiles(cell, views.first)), b = two ? drawn(index.FindTiles(cell, views.second)) : -1;
       if (a < 0 && b < 0) continue;
       const level = index.levelOf[cell], n = stats.cells++;
       cellData.set([...index.Center(cell), index.cellSize[level]], 4 * n);
       tileData.set([Math.max(a, 0), Math.max(b, 0), (a >= 0 ? 1 : 0) | (b >= 0 ? 2 : 0), level], 4 * n);
+      extentData[2 * n] = extentOf(a), extentData[2 * n + 1] = extentOf(b);
       stats.billboards += (a >= 0) + (b >= 0);
       stats.minLevel = stats.minLevel < 0 ? level : Math.min(stats.minLevel, level);
       stats.maxLevel = Math.max(stats.maxLevel, level);
@@ -729,11 +808,14 @@ class TreeRenderer {
     gl.bufferData(gl.ARRAY_BUFFER, cellData.subarray(0, 4 * stats.cells), gl.STREAM_DRAW);
     gl.bindBuffer(gl.ARRAY_BUFFER, this.tileBuffer);
     gl.bufferData(gl.ARRAY_BUFFER, tileData.subarray(0, 4 * stats.cells), gl.STREAM_DRAW);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.extentBuffer);
+    gl.bufferData(gl.ARRAY_BUFFER, extentData.subarray(0, 2 * stats.cells), gl.STREAM_DRAW);
     const p = this.program;
     gl.useProgram(p);
     SetProjection(p, cam, depth);
     p.Set("uCameraRight", "3fv", cam.R[0]);
     p.Set("uCameraUp", "3fv", Scale(cam.R[1], -1));
+    p.Set("uCameraForward", "3fv", cam.R[2]);
     p.Set("uEye", "3fv", worldEye);
     p.Set("uScale", "1f", 1.0);
     p.Set("uModelRotation", "Matrix3fv", false, [0, 1, 2].flatMap((col) => [0, 1, 2].map((row) => instance.R[row][col])));
