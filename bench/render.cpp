@@ -1,6 +1,7 @@
 // Render benchmark: ms per frame at 1024x1024 for one tree on this machine's GL (llvmpipe here):
 // every forced level (the finest last), and the screen-space LOD at 1x to 16x the input
-// views' mean distance. Billboards are the pruned set the asset stores; the table also prints
+// views' mean distance and where the tree fills a third of the frame's height (a typical
+// viewing distance), each beside the finest level at that distance. Billboards are the pruned set the asset stores; the table also prints
 // how many there were before pruning, and per frame the fragments shaded (quads trimmed to their
 // alpha's extent, and whole), the pixels covered and the overdraw (fragments per covered pixel).
 //   voltree-bench-render ASSET [--size 1024] [--frames 12]
@@ -81,6 +82,33 @@ std::vector<View> Scaled(std::vector<View> cameras, const VtreeAsset& asset, dou
   return cameras;
 }
 
+// Mean over the frames of the share of the frame's rows where the tree covers a pixel.
+double HeightShare(TreeRenderer& renderer, const std::vector<View>& cameras) {
+  double sum = 0;
+  for (const View& camera : cameras) {
+    const Image8 image = renderer.Render(camera, {});
+    int top = image.height, bottom = -1;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        if (image.at(x, y, 3) > 0) top = std::min(top, y), bottom = std::max(bottom, y);
+    sum += bottom >= top ? double(bottom - top + 1) / image.height : 0.0;
+  }
+  return sum / double(cameras.size());
+}
+
+// The distance factor at which the tree fills `share` of the frame's height ("a typical viewing
+// distance"). Its height on screen goes about as 1 / distance, so a few fixed-point steps settle.
+double FactorForHeightShare(TreeRenderer& renderer, const std::vector<View>& cameras, const VtreeAsset& asset,
+                            double share) {
+  double factor = 1;
+  for (int step = 0; step < 4; ++step) {
+    const double now = HeightShare(renderer, Scaled(cameras, asset, factor));
+    if (now <= 0) break;
+    factor *= now / share;
+  }
+  return factor;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,15 +139,21 @@ int main(int argc, char** argv) {
     }
     TreeRenderOptions finest;
     finest.lod.forced_level = int(asset.levels.size()) - 1;
-    for (double factor : {1.0, 2.0, 3.0, 4.0, 8.0, 16.0}) {
+    const double third = FactorForHeightShare(renderer, cameras, asset, 1.0 / 3);
+    char third_name[32];
+    std::snprintf(third_name, sizeof third_name, "%.2f", third);
+    std::printf("the tree fills %.3f of the frame's height at 1x, a third at %sx (the \"third\" rows)\n\n",
+                HeightShare(renderer, cameras), third_name);
+    for (double factor : {1.0, third, 2.0, 3.0, 4.0, 8.0, 16.0}) {
+      const std::string at = factor == third ? Str("third, ", third_name, "x") : Str(factor, "x");
       if (factor > 1)  // what the LOD saves at this distance
-        rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), finest, Str("finest at ", factor, "x")));
-      rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), {}, Str("LOD at ", factor, "x distance")));
+        rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), finest, Str("finest at ", at)));
+      rows.push_back(Measure(renderer, Scaled(cameras, asset, factor), {}, Str("LOD at ", at)));
     }
-    std::printf("%-22s %8s %10s %10s %10s %12s %11s %11s %11s %9s\n", "frames", "levels", "cells", "billboards",
+    std::printf("%-24s %8s %10s %10s %10s %12s %11s %11s %11s %9s\n", "frames", "levels", "cells", "billboards",
                 "median ms", "traversal ms", "fragments", "untrimmed", "covered px", "overdraw");
     for (const Row& r : rows)
-      std::printf("%-22s %4d-%-3d %10.0f %10.0f %10.2f %12.2f %11.0f %11.0f %11.0f %9.2f\n", r.name.c_str(),
+      std::printf("%-24s %4d-%-3d %10.0f %10.0f %10.2f %12.2f %11.0f %11.0f %11.0f %9.2f\n", r.name.c_str(),
                   r.min_level, r.max_level, r.cells, r.billboards, r.median_ms, r.traversal_ms, r.fragments,
                   r.untrimmed_fragments, r.covered, r.covered > 0 ? r.fragments / r.covered : 0.0);
     if (!rows.empty() && rows[0].fragments < 0)
