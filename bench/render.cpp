@@ -1,8 +1,8 @@
 // Render benchmark: ms per frame at 1024x1024 for one tree on this machine's GL (llvmpipe here):
 // every forced level (the finest last), and the screen-space LOD at 1x to 16x the input
 // views' mean distance and where the tree fills a third of the frame's height (a typical
-// viewing distance), each beside the finest level at that distance. Billboards are the pruned set the asset stores; the table also prints
-// how many there were before pruning, and per frame the fragments shaded (quads trimmed to their
+// viewing distance), each beside the finest level at that distance. Billboards are the pruned set the asset stores; the
+// table also prints how many there were before pruning, and per frame the fragments shaded (quads trimmed to their
 // alpha's extent, and whole), the pixels covered and the overdraw (fragments per covered pixel).
 //   voltree-bench-render ASSET [--size 1024] [--frames 12]
 #include <CLI/CLI.hpp>
