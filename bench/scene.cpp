@@ -1,7 +1,7 @@
 // Scene benchmark: ms per frame on this machine's GL (llvmpipe here) for one tree (finest level
 // unpruned and pruned, pruned + LOD) and for scenes of 12 and 290 trees (samples/scenes), with
-// billboards per frame, instances drawn/culled and GPU memory; then frame time against the number
-// of trees (the first N instances of forest_290 seen from its orbit). Frames are drawn without
+// billboards and fragments per frame, instances drawn/culled and GPU memory; then frame time
+// against the number of trees (the first N instances of forest_290 seen from its orbit). Frames are drawn without
 // read-back; the median over the orbit frames is reported.
 //   voltree-bench-scene [--assets DIR] [--build] [--scenes samples/scenes] [--size 1024] [--frames 8]
 //                       [--json ms_vs_trees.json] [--dolly docs/figures/lod_dolly.png]
@@ -37,6 +37,7 @@ struct Row {
   size_t trees = 0;
   double drawn = 0, culled = 0, cells = 0, billboards = 0;
   double median_ms = 0, traversal_ms = 0;
+  double fragments = -1;  // per frame, all trees; -1 where the driver cannot count them
   size_t gpu_bytes = 0;
 };
 
@@ -68,6 +69,18 @@ Row Measure(SceneRenderer& renderer, const std::vector<View>& cameras, const Sce
   row.median_ms = Median(ms);
   row.traversal_ms = Median(traversal);
   row.gpu_bytes = renderer.GpuBytes().Total();
+  // Fragments in a pass of their own, so the queries' cost stays out of the timings.
+  SceneRenderOptions counted = options;
+  counted.tree.count_fragments = true;
+  renderer.ResetLodHistory();
+  double fragments = 0;
+  for (const View& camera : cameras) {
+    target.Clear(0, 0, 0, 0);
+    const SceneFrameStats stats = renderer.Draw(camera, counted);
+    if (stats.trees.fragments < 0 && stats.trees.cells > 0) return row;  // not countable here
+    fragments += double(std::max<int64_t>(stats.trees.fragments, 0)) / double(cameras.size());
+  }
+  row.fragments = fragments;
   return row;
 }
 
@@ -196,11 +209,11 @@ int main(int argc, char** argv) {
 
     std::printf("%s, %dx%d, %d orbit frames per row; assets in %s\n\n", context.renderer().c_str(), size, size, frames,
                 assets.string().c_str());
-    std::printf("%-30s %6s %7s %7s %9s %11s %10s %13s %9s\n", "frames", "trees", "drawn", "culled", "cells",
-                "billboards", "median ms", "traversal ms", "GPU KiB");
+    std::printf("%-30s %6s %7s %7s %9s %11s %10s %13s %11s %9s\n", "frames", "trees", "drawn", "culled", "cells",
+                "billboards", "median ms", "traversal ms", "fragments", "GPU KiB");
     for (const Row& r : rows)
-      std::printf("%-30s %6zu %7.1f %7.1f %9.0f %11.0f %10.1f %13.1f %9.1f\n", r.name.c_str(), r.trees, r.drawn,
-                  r.culled, r.cells, r.billboards, r.median_ms, r.traversal_ms, r.gpu_bytes / 1024.0);
+      std::printf("%-30s %6zu %7.1f %7.1f %9.0f %11.0f %10.1f %13.1f %11.0f %9.1f\n", r.name.c_str(), r.trees, r.drawn,
+                  r.culled, r.cells, r.billboards, r.median_ms, r.traversal_ms, r.fragments, r.gpu_bytes / 1024.0);
 
     // Frame time against the number of trees: the first N of the forest, from the full forest's orbit.
     const Scene forest = LoadScene(fs::path(scenes_dir) / "forest_290.json", {assets});
@@ -211,16 +224,17 @@ int main(int argc, char** argv) {
       forest_cameras = SceneOrbitCameras(full.Bounds(1), orbit);
     }
     nlohmann::json sweep = nlohmann::json::array();
-    std::printf("\nforest subsets (first N instances of forest_290, its orbit):\n%6s %10s %11s\n", "trees", "median ms",
-                "billboards");
+    std::printf("\nforest subsets (first N instances of forest_290, its orbit):\n%6s %10s %11s %11s\n", "trees",
+                "median ms", "billboards", "fragments");
     for (size_t n : {1, 12, 50, 100, 200, 290}) {
       Scene subset = forest;
       subset.instances.resize(std::min(n, forest.instances.size()));
       SceneRenderer renderer(subset, forest_assets);
       const Row r = Measure(renderer, forest_cameras, {}, Str(n, " trees"));
-      std::printf("%6zu %10.1f %11.0f\n", n, r.median_ms, r.billboards);
+      std::printf("%6zu %10.1f %11.0f %11.0f\n", n, r.median_ms, r.billboards, r.fragments);
       sweep.push_back({{"trees", n},
                        {"median_ms", r.median_ms},
+                       {"fragments", r.fragments},
                        {"billboards", r.billboards},
                        {"drawn", r.drawn},
                        {"gpu_bytes", r.gpu_bytes}});
@@ -233,6 +247,7 @@ int main(int argc, char** argv) {
         table.push_back({{"name", r.name},
                          {"trees", r.trees},
                          {"median_ms", r.median_ms},
+                         {"fragments", r.fragments},
                          {"billboards", r.billboards},
                          {"cells", r.cells},
                          {"drawn", r.drawn},

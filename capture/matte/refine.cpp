@@ -41,7 +41,9 @@ cv::Mat InfoFlowOnTiles(const cv::Mat& rgb, const cv::Mat& estimate, const cv::M
       const cv::Rect context = cv::Rect(x0 - margin, y0 - margin, core.width + 2 * margin, core.height + 2 * margin) &
                                cv::Rect(0, 0, rgb.cols, rgb.rows);
       const cv::Mat context_trimap = trimap(context).clone();
-      if (cv::countNonZero(context_trimap == 0) == 0 || cv::countNonZero(context_trimap == 255) == 0) continue;
+      if (cv::countNonZero(context_trimap == 0) == 0 || cv::countNonZero(context_trimap == 255) == 0 ||
+          cv::countNonZero(context_trimap == 128) < kMinInfoFlowUnknown)
+        continue;
       cv::Mat solved;
       try {
         cv::alphamat::infoFlow(rgb(context).clone(), context_trimap, solved);

@@ -14,8 +14,12 @@ cv::Mat RefineAlpha(const cv::Mat& rgb, const cv::Mat& estimate, const cv::Mat& 
                     const MatteOptions& options);
 
 // alphamat::infoFlow on the tiles that hold `solve` pixels, each with a margin of context; only
-// `solve` pixels are written. Tiles whose context has no known foreground or background keep
-// `estimate`.
+// `solve` pixels are written. Tiles whose context has no known foreground or background, or
+// fewer than kMinInfoFlowUnknown unknown pixels, keep `estimate`.
+// alphamat::infoFlow (OpenCV 4.6) reads past its neighbour lists, and crashes, when the trimap has
+// fewer unknown pixels than its nearest-neighbour searches ask for (measured: 1-4 crash, 5 do not).
+constexpr int kMinInfoFlowUnknown = 16;
+
 cv::Mat InfoFlowOnTiles(const cv::Mat& rgb, const cv::Mat& estimate, const cv::Mat& trimap, const cv::Mat& solve,
                         int tile);
 
