@@ -2,7 +2,6 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cmath>
 
