@@ -53,13 +53,19 @@ std::pair<std::vector<View>, std::vector<Image8>> LoadViewsAndMattes(const fs::p
   return loaded;
 }
 
+// Each matte covers a plausible part of its photo; throws Error naming those that do not.
+void CheckMatteCoverages(const fs::path& dir, const std::vector<View>& views, const std::vector<Image8>& mattes,
+                         const RunOptions& options) {
+  std::vector<NamedCoverage> coverages;
+  for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
+  CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
+}
+
 // The mattes before any reconstruction: each covers a plausible part of its photo, and all of
 // them agree through the cameras.
 void CheckMattes(const fs::path& dir, const RunOptions& options, Progress& progress) {
   const auto [views, mattes] = LoadViewsAndMattes(dir);
-  std::vector<NamedCoverage> coverages;
-  for (size_t i = 0; i < views.size(); ++i) coverages.push_back({views[i].name, MatteCoverage(mattes[i])});
-  CheckMatteCoverage(coverages, options.matte.coverage, Str("in ", (dir / "mattes").string()), false);
+  CheckMatteCoverages(dir, views, mattes, options);
   if (int(views.size()) < options.consistency.min_photos) {
     progress.Say("check", Str("only ", views.size(),
                               " photos: their visual hull is too loose to check the mattes "
@@ -176,6 +182,11 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
       HullRematteOptions rematte = options.rematte;
       rematte.matte = options.matte.matte;
       RematteWorkspaceFromHull(dir, rematte, progress);
+      // A matte left (almost) empty would empty the hull that bounds the tree: name it first.
+      if (options.guards) {
+        const auto [views, mattes] = LoadViewsAndMattes(dir);
+        CheckMatteCoverages(dir, views, mattes, options);
+      }
       UpdateBoundsFromMattes(dir, options.calibrate.hull, progress);
     }
   });

@@ -8,6 +8,7 @@
 #include "capture/colmap_binary.h"
 #include "capture/matte/cv.h"
 #include "capture/matte/foreground.h"
+#include "capture/matte/grabcut.h"
 #include "capture/matte/refine.h"
 #include "capture/matte/workspace.h"
 #include "core/error.h"
@@ -40,7 +41,7 @@ int HullBand(const Image8& photo) { return std::max(2, std::min(photo.width, pho
 
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
 Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image8& hull, const Image8* backdrop,
-                       bool seed_core, const HullRematteOptions& options) {
+                       const HullRematteOptions& options) {
   const cv::Mat rgb = matte::View(photo);
   const cv::Mat old_alpha = matte::View(old_matte);
   const cv::Mat inside = matte::View(hull);
@@ -54,16 +55,24 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
   trimap.setTo(255, (shrunk != 0) & (old_alpha >= options.confident_alpha * 255));
   cv::Mat estimate;
   old_alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
-  // An old matte that missed the tree leaves (almost) no seed: the hull's core becomes the seed
-  // (a dense crown is mostly leaves there) and the hull the first estimate. Not inside a hull
-  // only a majority agrees on: it is loose, and its core is sky and hills between the branches
-  // of a sparse crown (the aspen's worst matte: MSE 0.047 with the core as seed, 0.015 without;
-  // the oak, whose trusted photos bound it tightly, needs the seed: 0.0048 with, 0.026 without).
-  if (seed_core && cv::countNonZero(trimap == 255) < 0.1 * cv::countNonZero(inside)) {
-    cv::Mat core;
-    cv::erode(inside, core, disc(6 * band));
-    trimap.setTo(255, core != 0);
-    inside.convertTo(estimate, CV_32F, 0.5 / 255.0);
+  // An old matte that missed the tree leaves (almost) no seed (an eye-level photo whose first
+  // matte took the skyline for the tree and the tree for ground). GrabCut then finds the tree by
+  // its colours inside the hull's projection, against this photo's own background outside it,
+  // and its edges become the unknown band.
+  const bool seedless = cv::countNonZero(trimap == 255) < 0.1 * cv::countNonZero(inside);
+  if (seedless) {
+    cv::Mat labels(photo.height, photo.width, CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
+    labels.setTo(cv::GC_PR_FGD, inside != 0);
+    labels.setTo(cv::GC_BGD, grown == 0);
+    if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
+    const cv::Mat tree = matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & (grown != 0);
+    const int radius = std::max(1, std::min(photo.width, photo.height) / 256);
+    cv::Mat sure, near;
+    cv::erode(tree, sure, disc(radius));
+    cv::dilate(tree, near, disc(radius));
+    trimap.setTo(0, near == 0);
+    trimap.setTo(255, sure != 0);
+    tree.convertTo(estimate, CV_32F, 1.0 / 255.0);
   }
   if (backdrop != nullptr) {
     const cv::Mat background = matte::View(*backdrop) != 0;
@@ -123,7 +132,7 @@ std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const 
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t t) {
     const size_t i = target_index[t];
     rematted[t] = MatteInsideHull(photos[i], mattes[i], hulls[sweep ? i : t].mask,
-                                  backdrops.empty() ? nullptr : &backdrops[i], /*seed_core=*/!*majority_hull, options);
+                                  backdrops.empty() ? nullptr : &backdrops[i], options);
     // Taken out afterwards, not handed to the solver as known background: there the grey of the
     // hazy hills claimed the aspen's thin trunk (held-out recall 0.947 -> 0.837).
     if (sweep)

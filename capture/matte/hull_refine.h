@@ -8,8 +8,11 @@
 //   2. The hull of the trusted photos alone, projected into each untrusted photo, bounds the
 //      tree there: outside it (grown by a band) is background whatever its colour (skyline,
 //      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
-//      is unknown and solved from the photo's colours (alphamat::infoFlow by default). Near it,
-//      what two neighbours show at one depth behind the hull is then taken out (backdrop.h).
+//      is unknown and solved from the photo's colours (alphamat::infoFlow by default). An old
+//      matte with no tree to seed it (the skyline taken for the tree, the tree against the ground
+//      missed) is seeded by GrabCut inside the hull against the photo's background outside it.
+//      Near the hull, what two neighbours show at one depth behind it is then taken out
+//      (backdrop.h).
 //   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
 //      matted again the same way inside the hull of those it passes.
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
@@ -51,7 +54,7 @@ struct HullRematteResult {
   std::vector<std::string> trusted, rematted;
   std::vector<std::string> changed;  // every photo whose matte changed (re-matted or backdrop taken out)
   // Too few were trusted: the majority hull of all bounded the tree, in every pass after the first
-  // too, and its core was never taken as tree.
+  // too.
   bool majority_hull = false;
   std::vector<std::string> votes;  // per photo: "name carves/majority keeps"
 };

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/matte/fill.h"
+#include "capture/matte/grabcut.h"
 #include "capture/matte/sky.h"
 
 namespace voltree::matte {
@@ -137,13 +138,7 @@ cv::Mat SeparateTrunkFromGround(const cv::Mat& rgb, const cv::Mat& alpha, const 
                                  : in_tree ? (b > 0.75f ? cv::GC_FGD : cv::GC_PR_FGD)
                                            : (b < 0.25f ? cv::GC_BGD : cv::GC_PR_BGD);
       }
-    // GrabCut seeds its GMMs with k-means on the thread's cv::theRNG(); reseed it so the result
-    // does not depend on what ran before on this thread.
-    cv::theRNG().state = 0x5eed;
-    cv::Mat background_model, foreground_model;
-    cv::grabCut(strip, mask, cv::Rect(), background_model, foreground_model, 3, cv::GC_INIT_WITH_MASK);
-    cv::Mat cut = (mask == cv::GC_FGD) | (mask == cv::GC_PR_FGD);
-    tree = KeepConnectedToRow(cut, start - 1);
+    tree = KeepConnectedToRow(GrabCutForeground(strip, mask, 3, options.grabcut_max_side), start - 1);
     tree.rowRange(0, start).setTo(0);
   }
   cv::Mat full = cv::Mat::zeros(rgb.size(), CV_8U);
@@ -157,23 +152,11 @@ cv::Mat SeparateTrunkFromGround(const cv::Mat& rgb, const cv::Mat& alpha, const 
 // No sky in the photo (a camera looking down): the background is ground everywhere. GrabCut
 // from the frame: a border strip is certain ground, the rest probably tree. CV_8U 255 = tree.
 cv::Mat CutFromGround(const cv::Mat& rgb, const MatteOptions& options) {
-  const double scale = std::min(1.0, double(options.grabcut_max_side) / std::max(rgb.rows, rgb.cols));
-  cv::Mat small = rgb;
-  if (scale < 1.0)
-    cv::resize(
-        rgb, small,
-        cv::Size(std::max(1, int(std::lround(rgb.cols * scale))), std::max(1, int(std::lround(rgb.rows * scale)))), 0,
-        0, cv::INTER_AREA);
-  const int border = std::max(2, std::min(small.rows, small.cols) * 3 / 100);
-  if (small.rows <= 3 * border || small.cols <= 3 * border) return cv::Mat::zeros(rgb.size(), CV_8U);
-  cv::Mat mask(small.size(), CV_8U, cv::Scalar(cv::GC_BGD));
-  mask(cv::Rect(border, border, small.cols - 2 * border, small.rows - 2 * border)).setTo(cv::GC_PR_FGD);
-  cv::theRNG().state = 0x5eed;  // see SeparateTrunkFromGround
-  cv::Mat background_model, foreground_model;
-  cv::grabCut(small, mask, cv::Rect(), background_model, foreground_model, 5, cv::GC_INIT_WITH_MASK);
-  cv::Mat tree = (mask == cv::GC_FGD) | (mask == cv::GC_PR_FGD), full;
-  cv::resize(tree, full, rgb.size(), 0, 0, cv::INTER_NEAREST);
-  return full;
+  const int border = std::max(2, std::min(rgb.rows, rgb.cols) * 3 / 100);
+  if (rgb.rows <= 3 * border || rgb.cols <= 3 * border) return cv::Mat::zeros(rgb.size(), CV_8U);
+  cv::Mat labels(rgb.size(), CV_8U, cv::Scalar(cv::GC_BGD));
+  labels(cv::Rect(border, border, rgb.cols - 2 * border, rgb.rows - 2 * border)).setTo(cv::GC_PR_FGD);
+  return GrabCutForeground(rgb, labels, 5, options.grabcut_max_side);
 }
 
 }  // namespace

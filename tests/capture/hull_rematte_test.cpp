@@ -1,0 +1,91 @@
+// Re-matting inside the visual hull of the photos that agree, on a studio set photographed from
+// 20 degrees in front of the realistic backdrop (ground behind the tree in every photo, the
+// skyline at the top of the lower ring's photos), with the true cameras. Half of the lower ring's
+// first mattes are what per-photo matting gave there on the third-party aspen: the skyline taken
+// for the tree, and the tree, against the ground, missed. Nothing of those mattes seeds the tree.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "capture/colmap_binary.h"
+#include "capture/matte/hull_refine.h"
+#include "capture/matte/metrics.h"
+#include "core/colmap_model.h"
+#include "core/error.h"
+#include "core/image.h"
+#include "pipeline/voltree_binary.h"
+
+namespace voltree {
+namespace {
+namespace fs = std::filesystem;
+
+class HullRematte : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::path(::testing::TempDir()) / Str("voltree_hull_rematte_", ::getpid());
+    fs::remove_all(dir_);
+    // 16 photos in two rings (20 and 35 degrees) at 192²; about a second.
+    ASSERT_EQ(test::Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --min-elevation 20 --quiet -o " +
+                            dir_.string()),
+              0);
+    views_ = ReadColmapModel(dir_ / "sparse").Views();
+    for (const View& view : views_) {
+      photos_.push_back(ReadImage8(dir_ / "images" / view.name, 3));
+      truth_.push_back(ReadImage8(dir_ / "mattes" / (fs::path(view.name).stem().string() + ".png"), 1));
+    }
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  // Every other photo of the lower ring (the studio names that ring's photos first).
+  static bool Missed(size_t i) { return i < views_.size() / 2 && i % 2 == 1; }
+
+  // The skyline band across the top eighth of the photo, and nothing of the tree.
+  static Image8 SkylineOnly(const Image8& truth) {
+    Image8 matte(truth.width, truth.height, 1);
+    for (int y = 0; y < truth.height / 8; ++y)
+      for (int x = 0; x < truth.width; ++x) matte.at(x, y) = 255;
+    return matte;
+  }
+
+  static inline fs::path dir_;
+  static inline std::vector<View> views_;
+  static inline std::vector<Image8> photos_, truth_;
+};
+
+// Measured: 12 of 16 photos trusted; the missed photos come back at MSE 0.0082 mean, 0.0097 worst
+// (recall of the tree 0.984). Seeded by the eroded core of the hull's projection instead, as
+// before, they came back at 0.0254 mean, 0.0293 worst: the hull's loose projection, taken as the
+// first estimate, fills the gaps of the crown.
+TEST_F(HullRematte, FindsTheTreeWhereTheFirstMatteMissedItEntirely) {
+  std::vector<Image8> mattes;
+  for (size_t i = 0; i < views_.size(); ++i) mattes.push_back(Missed(i) ? SkylineOnly(truth_[i]) : truth_[i]);
+  const HullRematteResult result = RematteFromHull(views_, photos_, mattes, HullRematteOptions{});
+  double mean = 0, worst = 0, recall = 0;
+  size_t missed = 0;
+  for (size_t i = 0; i < views_.size(); ++i) {
+    if (!Missed(i)) continue;
+    const MatteError error = CompareMattes(mattes[i], truth_[i]);
+    mean += error.mse / 1000;
+    worst = std::max(worst, error.mse / 1000);
+    double tree = 0, found = 0;
+    for (size_t p = 0; p < truth_[i].pixels.size(); ++p)
+      if (truth_[i].pixels[p] > 127) {
+        ++tree;
+        found += mattes[i].pixels[p] > 127;
+      }
+    recall += found / tree;
+    ++missed;
+  }
+  mean /= double(missed);
+  recall /= double(missed);
+  std::printf("%zu trusted, majority hull %d; missed photos re-matted: MSE %.4f mean, %.4f worst, recall %.3f\n",
+              result.trusted.size(), int(result.majority_hull), mean, worst, recall);
+  EXPECT_LT(mean, 0.015);
+  EXPECT_LT(worst, 0.02);
+  EXPECT_GT(recall, 0.9);
+}
+
+}  // namespace
+}  // namespace voltree
