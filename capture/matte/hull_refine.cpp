@@ -66,7 +66,7 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
     labels.setTo(cv::GC_BGD, grown == 0);
     if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
     const cv::Mat tree = matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & (grown != 0);
-    const int radius = std::max(1, std::min(photo.width, photo.height) / 256);
+    const int radius = options.matte.BandRadius(photo.width, photo.height);
     cv::Mat sure, near;
     cv::erode(tree, sure, disc(radius));
     cv::dilate(tree, near, disc(radius));

@@ -1,5 +1,7 @@
 #include "capture/matte/options.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 
 namespace voltree {
@@ -40,6 +42,10 @@ void MatteOptions::Check() const {
     FailOption("MatteOptions.guided_radius", "must be in [1, 32], got ", guided_radius);
   if (!(guided_epsilon > 0.0)) FailOption("MatteOptions.guided_epsilon", "must be positive, got ", guided_epsilon);
   if (infoflow_tile < 32) FailOption("MatteOptions.infoflow_tile", "must be at least 32, got ", infoflow_tile);
+}
+
+int MatteOptions::BandRadius(int width, int height) const {
+  return band_radius > 0 ? band_radius : std::max(1, std::min(width, height) / 256);
 }
 
 }  // namespace voltree

@@ -25,6 +25,8 @@ struct MatteOptions {
   // Half-width in pixels of the unknown band around hard (GrabCut) edges; 0: 1 px per 256 px of
   // the shorter image side, at least 1.
   int band_radius = 0;
+  // `band_radius`, or the automatic width for a width x height photo.
+  int BandRadius(int width, int height) const;
   // Fraction of the image height whose rows seed the sky colour model.
   double sky_seed_rows = 0.08;
   // Spread (Lab units) of the top rows around the smooth sky model above which they are taken for

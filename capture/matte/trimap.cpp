@@ -270,7 +270,7 @@ Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options) {
                     : CutFromGround(rgb, options);
     result.alpha.setTo(1.0f, tree);
     // Hard GrabCut edges are uncertain within the band radius.
-    const int radius = options.band_radius > 0 ? options.band_radius : std::max(1, std::min(rows, cols) / 256);
+    const int radius = options.BandRadius(cols, rows);
     cv::Mat inside, outside;
     cv::erode(tree, inside, Disk(radius));
     cv::dilate(tree, outside, Disk(radius));
