@@ -75,6 +75,10 @@ std::vector<OptionSpec> CalibrateFlags() {
        {"CalibrateOptions.matcher"},
        "COLMAP matcher: exhaustive, or sequential for photos taken in order along a walk"},
       {"--min-registered", {"CalibrateOptions.min_registered"}, "Fraction of the photos that must get a camera"},
+      {"--refine-rounds",
+       {"ModelRefinementOptions.rounds"},
+       "After COLMAP's mapper: rounds of dropping the points whose reprojection error exceeds 1.5 times the mean, "
+       "then bundle adjustment (0: keep the mapper's model)"},
       {"--mask",
        {"CalibrateOptions.mask"},
        "Where features may come from when mattes/ exists: all (ground and surroundings help), tree (the tree "

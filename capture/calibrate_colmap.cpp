@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/colmap_binary.h"
+#include "capture/colmap_refine.h"
 #include "capture/colmap_runner.h"
 #include "capture/photo_folder.h"
 #include "core/error.h"
@@ -152,6 +153,15 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   if (result.models_found > 1)
     progress.Say("calibrate", Str("COLMAP made ", result.models_found, " separate models; keeping the largest, ",
                                   result.model_folder.string(), " (", best_size, " photos)"));
+  if (options.refine.rounds > 0) {
+    ModelRefinementOptions refine = options.refine;
+    refine.keep_intrinsics = refine.keep_intrinsics || !options.camera_params.empty();
+    RefinedModel refined =
+        RefineColmapModel(colmap, result.model_folder, result.model, colmap_folder / "refined", refine, progress);
+    result.stage_seconds.emplace_back("refine", refined.seconds);
+    result.model = std::move(refined.model);
+    result.model_folder = refined.folder;
+  }
   stage("model_converter", {"--input_path", result.model_folder.string(), "--output_path", result.model_folder.string(),
                             "--output_type", "TXT"});
   return result;
