@@ -220,7 +220,10 @@ EvaluateResult EvaluateWorkspace(const fs::path& workspace, const EvaluateOption
   report.plots = std::move(plots.files);
   report.notes.insert(report.notes.end(), plots.notes.begin(), plots.notes.end());
   if (options.images && truth.held_out) {  // the asset in the web page, framed beside each truth
-    WriteWebPage({.input = asset_path, .output = staged.path() / kWebFolderName});
+    WebPageOptions page;
+    page.input = asset_path;
+    page.output = staged.path() / kWebFolderName;
+    WriteWebPage(page);
     LinkWebPage(held_out, options.metrics.background_grey, &report.comparisons);
   }
   staged.Commit();

@@ -26,7 +26,12 @@ struct ViewEvaluation {
 
 ComparisonFiles ComparisonFilesOf(const std::string& view_name) {
   const std::string stem = Str(kEvalFolderName, "/held_out/", FlatStem(view_name));
-  return {view_name, stem + "_truth.png", stem + "_voltree.png", stem + "_difference.png"};
+  ComparisonFiles files;
+  files.view = view_name;
+  files.truth = stem + "_truth.png";
+  files.render = stem + "_voltree.png";
+  files.difference = stem + "_difference.png";
+  return files;
 }
 
 void WriteComparison(const Image8& truth, const Image8& render, const ImageMetricsOptions& metrics,

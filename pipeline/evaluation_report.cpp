@@ -125,10 +125,13 @@ ReportPage EvaluationPage(const EvaluationReport& report, std::vector<std::strin
   for (const LevelPruning& level : report.pruning.levels) page.pruned_percent[level.level] = level.pruned_percent;
   for (size_t v = 0; v < report.comparisons.size(); ++v) {
     const ComparisonFiles& files = report.comparisons[v];
-    HtmlComparison comparison{files.view, files.truth, files.render, files.difference,
-                              report.table.Overall(ViewSet::kHeldOut).views[v].metrics};
-    comparison.interactive = files.interactive;
-    comparison.interactive_height = files.interactive_height;
+    HtmlComparison comparison{files.view,
+                              files.truth,
+                              files.render,
+                              files.difference,
+                              report.table.Overall(ViewSet::kHeldOut).views[v].metrics,
+                              files.interactive,
+                              files.interactive_height};
     page.comparisons.push_back(std::move(comparison));
   }
   page.difference_gain = report.difference_gain;

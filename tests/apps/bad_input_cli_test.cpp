@@ -23,6 +23,7 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "pipeline/voltree_binary.h"
+#include "staging_leftovers.h"
 
 namespace voltree {
 namespace {
@@ -262,16 +263,7 @@ Snapshot TakeSnapshot(const fs::path& root) {
   return snapshot;
 }
 
-std::vector<std::string> StagingLeftovers(const fs::path& root) {
-  std::vector<std::string> found;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    const std::string name = entry.path().filename().string();
-    if (name.find(".partial-") != std::string::npos || name.find(".tmp-") != std::string::npos ||
-        name.find(".old-") != std::string::npos)
-      found.push_back(entry.path().string());
-  }
-  return found;
-}
+using testing::StagingLeftovers;
 
 class BadInput : public ::testing::TestWithParam<size_t> {
  protected:

@@ -55,7 +55,7 @@ TEST(InfoCli, PrintsWhereEachLevelIsDrawableAndWhatATruncatedFileLacks) {
   WriteFileAtomic(dir / "cut.vtree", bytes.substr(0, cut));
   outcome = test::VoltreeCaptured("info '" + (dir / "cut.vtree").string() + "'");
   EXPECT_EQ(outcome.status, 0) << outcome.output;
-  for (const std::string expected :
+  for (const std::string& expected :
        {"warning: truncated file: levels 2..2 of 0..2 are missing: the file ends at byte " + std::to_string(cut) +
             ", inside the CELL chunk of level 2 that starts at byte " + std::to_string(ends[1]),
         "CELL at byte " + std::to_string(ends[1]) + ": cut off, the file ends at byte " + std::to_string(cut),

@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "staging_leftovers.h"
 
 extern char** environ;
 
@@ -72,15 +73,7 @@ bool WaitForFiles(const fs::path& folder, size_t files, pid_t pid) {
   return false;
 }
 
-std::vector<std::string> StagingLeftovers(const fs::path& root) {
-  std::vector<std::string> found;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    const std::string name = entry.path().filename().string();
-    if (name.find(".partial-") != std::string::npos || name.find(".old-") != std::string::npos)
-      found.push_back(entry.path().string());
-  }
-  return found;
-}
+using testing::StagingLeftovers;
 
 // Every file under `root` with its bytes: what the user had before the interrupted command.
 std::map<std::string, std::string> Contents(const fs::path& root) {

@@ -13,17 +13,13 @@
 #include "capture/colmap_runner.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path FreshFolder(const std::string& name) {
-  const fs::path folder = fs::path(::testing::TempDir()) / ("voltree_colmap_binary_" + name);
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
+using testing::FreshFolder;
 
 ColmapModel SmallModel() {
   ColmapModel model;

@@ -18,15 +18,6 @@ namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-bool HaveColmap() {
-  try {
-    FindColmap();
-    return true;
-  } catch (const Error&) {
-    return false;
-  }
-}
-
 // `views` cameras at 5 units from the origin, looking at it; 400 points in the unit cube. Each
 // point is observed by every camera that sees it, with Gaussian noise of 0.25 px; one observation
 // in `outlier_every` is moved 2.5-3.5 px instead.
@@ -94,7 +85,6 @@ Outcome Refine(const fs::path& dir, const ColmapModel& model, const ColmapModel&
 }
 
 TEST(ColmapRefine, DroppingFarObservationsBringsTheCamerasCloser) {
-  if (!HaveColmap()) GTEST_SKIP() << "colmap is not on PATH";
   const ColmapModel observed = RingModel(12, 8, 7);
   const ColmapModel truth = RingModel(12, 8, 7);  // the same cameras; its observations are not used
   const fs::path dir = fs::path(::testing::TempDir()) / ("voltree_colmap_refine_" + std::to_string(::getpid()));
@@ -126,7 +116,6 @@ TEST(ColmapRefine, DroppingFarObservationsBringsTheCamerasCloser) {
 }
 
 TEST(ColmapRefine, KnownIntrinsicsStayAsGiven) {
-  if (!HaveColmap()) GTEST_SKIP() << "colmap is not on PATH";
   ColmapModel observed = RingModel(8, 8, 11);
   observed.cameras[1] = Camera::Pinhole(320, 240, 310, 310, 160, 120);  // 3 % off: adjustment would move it
   const fs::path dir = fs::path(::testing::TempDir()) / ("voltree_colmap_refine_k_" + std::to_string(::getpid()));

@@ -10,7 +10,7 @@
 namespace voltree {
 namespace {
 
-const VtreeAsset& Asset() {
+const VtreeAsset& FourLevelAsset() {
   static const VtreeAsset asset = [] {
     SyntheticVolumeOptions volume;
     volume.billboards = 600;
@@ -32,7 +32,7 @@ std::vector<size_t> LevelEnds(const std::string& bytes) {
 }
 
 TEST(VtreeProgressive, AtlasComesBeforeTheLevels) {
-  const auto chunks = ListChunks(SerializeAsset(Asset()), "tree.vtree");
+  const auto chunks = ListChunks(SerializeAsset(FourLevelAsset()), "tree.vtree");
   ASSERT_GE(chunks.size(), 4u);
   EXPECT_EQ(chunks[0].tag, "HEAD");
   EXPECT_EQ(chunks[1].tag, "ATLS");
@@ -43,9 +43,9 @@ TEST(VtreeProgressive, APrefixDrawsItsWholeLevelsAndNamesWhatIsMissing) {
   for (bool zstd : {false, true}) {
     VtreeWriteOptions write;
     write.zstd = zstd;
-    const std::string bytes = SerializeAsset(Asset(), write);
+    const std::string bytes = SerializeAsset(FourLevelAsset(), write);
     const std::vector<size_t> ends = LevelEnds(bytes);
-    const size_t levels = Asset().levels.size();
+    const size_t levels = FourLevelAsset().levels.size();
     ASSERT_EQ(ends.size(), levels);
     for (size_t k = 0; k + 1 < levels; ++k) {
       // Cut exactly after level k, a few bytes into level k + 1's CELL, and inside its BBRD.
@@ -58,8 +58,8 @@ TEST(VtreeProgressive, APrefixDrawsItsWholeLevelsAndNamesWhatIsMissing) {
         read.report = &report;
         const VtreeAsset partial = ParseAsset(prefix, "tree.vtree", read);
         ASSERT_EQ(partial.levels.size(), k + 1) << "cut at " << cut;
-        for (size_t l = 0; l <= k; ++l) EXPECT_EQ(partial.levels[l].cells, Asset().levels[l].cells);
-        EXPECT_EQ(partial.atlas.dxt5, Asset().atlas.dxt5);
+        for (size_t l = 0; l <= k; ++l) EXPECT_EQ(partial.levels[l].cells, FourLevelAsset().levels[l].cells);
+        EXPECT_EQ(partial.atlas.dxt5, FourLevelAsset().atlas.dxt5);
         EXPECT_TRUE(report.truncated);
         EXPECT_EQ(report.levels_loaded, k + 1);
         EXPECT_EQ(report.levels_in_file, levels);
@@ -85,7 +85,7 @@ TEST(VtreeProgressive, APrefixDrawsItsWholeLevelsAndNamesWhatIsMissing) {
 }
 
 TEST(VtreeProgressive, ListChunksMarksTheChunkTheFileEndsIn) {
-  const std::string bytes = SerializeAsset(Asset());
+  const std::string bytes = SerializeAsset(FourLevelAsset());
   const size_t cut = LevelEnds(bytes)[1] + 100;
   EXPECT_THROW(ListChunks(std::string_view(bytes).substr(0, cut), "tree.vtree"), Error);
   const auto chunks = ListChunks(std::string_view(bytes).substr(0, cut), "tree.vtree", /*allow_partial=*/true);
@@ -97,8 +97,8 @@ TEST(VtreeProgressive, ListChunksMarksTheChunkTheFileEndsIn) {
 }
 
 TEST(VtreeProgressive, MaxLevelLoadsTheCoarserLevelsOnly) {
-  const std::string bytes = SerializeAsset(Asset());
-  const size_t levels = Asset().levels.size();
+  const std::string bytes = SerializeAsset(FourLevelAsset());
+  const size_t levels = FourLevelAsset().levels.size();
   for (int max_level : {0, 1, int(levels) - 1, int(levels) + 3}) {
     VtreeLoadReport report;
     VtreeReadOptions read;

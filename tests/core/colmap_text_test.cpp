@@ -8,17 +8,13 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path FreshFolder(const std::string& name) {
-  const fs::path folder = fs::path(::testing::TempDir()) / ("voltree_colmap_text_" + name);
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
+using testing::FreshFolder;
 
 ColmapModel ExampleModel() {
   ColmapModel model;

@@ -6,17 +6,13 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path FreshFolder(const std::string& name) {
-  const fs::path folder = fs::path(::testing::TempDir()) / ("voltree_files_" + name);
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
+using testing::FreshFolder;
 
 size_t EntryCount(const fs::path& folder) {
   return size_t(std::distance(fs::directory_iterator(folder), fs::directory_iterator()));

@@ -9,19 +9,15 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path FreshFolder(const std::string& name) {
-  const fs::path folder = fs::path(::testing::TempDir()) / ("voltree_image_" + name);
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
+using testing::FreshFolder;
 
-Image8 Pattern(int width, int height, int channels) {
+Image8 ChannelPattern(int width, int height, int channels) {
   Image8 image(width, height, channels);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
@@ -32,14 +28,14 @@ Image8 Pattern(int width, int height, int channels) {
 TEST(ImageIo, PngRoundTripsExactlyForOneThreeAndFourChannels) {
   const fs::path folder = FreshFolder("png");
   for (int channels : {1, 3, 4}) {
-    const Image8 image = Pattern(23, 17, channels);
+    const Image8 image = ChannelPattern(23, 17, channels);
     const fs::path path = folder / Str("p", channels, ".png");
     WriteImage(path, image);
     EXPECT_EQ(ReadImage8(path), image) << channels << " channels";
     EXPECT_EQ(ReadImageSize(path), std::make_pair(23, 17));
   }
   // Deterministic bytes: writing the same image twice gives the same file.
-  WriteImage(folder / "again.png", Pattern(23, 17, 4));
+  WriteImage(folder / "again.png", ChannelPattern(23, 17, 4));
   EXPECT_EQ(ReadFile(folder / "again.png"), ReadFile(folder / "p4.png"));
 }
 
@@ -56,7 +52,7 @@ TEST(ImageIo, StraightAlphaIsPreservedExactly) {
   ASSERT_EQ(matte.channels, 1);
   EXPECT_EQ(matte.pixels, (std::vector<uint8_t>{0, 1, 128, 255}));
   // Grey -> RGB replicates; RGB -> RGBA adds opaque alpha.
-  WriteImage(folder / "g.png", Pattern(3, 2, 1));
+  WriteImage(folder / "g.png", ChannelPattern(3, 2, 1));
   const Image8 rgb = ReadImage8(folder / "g.png", 3);
   EXPECT_EQ(rgb.at(2, 1, 0), rgb.at(2, 1, 2));
   const Image8 rgba = ReadImage8(folder / "g.png", 4);
@@ -98,7 +94,7 @@ TEST(ImageIo, ExrKeepsFloatsExactly) {
 
 TEST(ImageIo, TruncatedJpegIsRefusedNotReadAsGrey) {
   const fs::path folder = FreshFolder("truncated");
-  WriteImage(folder / "whole.jpg", Pattern(64, 48, 3));
+  WriteImage(folder / "whole.jpg", ChannelPattern(64, 48, 3));
   const std::string bytes = ReadFile(folder / "whole.jpg");
   WriteFileAtomic(folder / "half.jpg", bytes.substr(0, bytes.size() / 2));
   EXPECT_NO_THROW(ReadImage8(folder / "whole.jpg"));

@@ -70,7 +70,7 @@ TEST(VolumeIo, InvalidVolumeWritesNothing) {
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
 
-std::string ErrorOf(const fs::path& folder) {
+std::string LoadErrorOf(const fs::path& folder) {
   try {
     ReadVolume(folder);
   } catch (const Error& e) {
@@ -88,19 +88,19 @@ TEST(VolumeIo, DetectsCorruptionAndNamesTheFile) {
   std::string flipped = good;
   flipped[40] ^= 0x10;
   WriteFileAtomic(folder / kVolumeBinName, flipped);
-  EXPECT_NE(ErrorOf(folder).find("volume.bin: checksum"), std::string::npos) << ErrorOf(folder);
+  EXPECT_NE(LoadErrorOf(folder).find("volume.bin: checksum"), std::string::npos) << LoadErrorOf(folder);
 
   WriteFileAtomic(folder / kVolumeBinName, good.substr(0, 30));
-  EXPECT_NE(ErrorOf(folder).find("volume.bin"), std::string::npos);
+  EXPECT_NE(LoadErrorOf(folder).find("volume.bin"), std::string::npos);
 
   std::string magic = good;
   magic[0] = 'X';
   WriteFileAtomic(folder / kVolumeBinName, magic);
-  EXPECT_NE(ErrorOf(folder).find("bad magic"), std::string::npos);
+  EXPECT_NE(LoadErrorOf(folder).find("bad magic"), std::string::npos);
 
   WriteFileAtomic(folder / kVolumeBinName, good);
   WriteFileAtomic(folder / kVolumeJsonName, "{\"format\": \"voltree-volume\"");
-  EXPECT_NE(ErrorOf(folder).find("volume.json: not valid JSON"), std::string::npos) << ErrorOf(folder);
+  EXPECT_NE(LoadErrorOf(folder).find("volume.json: not valid JSON"), std::string::npos) << LoadErrorOf(folder);
 }
 
 // `bytes` without its checksum, re-checksummed as volume.bin is.
@@ -120,8 +120,8 @@ TEST(VolumeIo, ChecksCountsEvenWithAValidChecksum) {
   testing::TempDir dir("io_counts");
   WriteVolume(dir.path / "volume", volume);
   WriteFileAtomic(dir.path / "volume" / kVolumeBinName, WithCrc(bytes));
-  EXPECT_NE(ErrorOf(dir.path / "volume").find("exceed the file size"), std::string::npos)
-      << ErrorOf(dir.path / "volume");
+  EXPECT_NE(LoadErrorOf(dir.path / "volume").find("exceed the file size"), std::string::npos)
+      << LoadErrorOf(dir.path / "volume");
 }
 
 TEST(VolumeIo, EndsWithTheCrc32OfEverythingBefore) {
@@ -151,7 +151,7 @@ TEST(VolumeIo, AnOlderVersionAsksToReconstructAgain) {
   testing::TempDir dir("io_version");
   const fs::path folder = dir.path / "volume";
   WriteVersion1(folder);
-  const std::string message = ErrorOf(folder);
+  const std::string message = LoadErrorOf(folder);
   EXPECT_NE(message.find("volume.json: volume version 1 was written by an older voltree; run 'voltree reconstruct' "
                          "again"),
             std::string::npos)
@@ -159,7 +159,7 @@ TEST(VolumeIo, AnOlderVersionAsksToReconstructAgain) {
 
   // volume.bin alone of version 1 says the same, not that its checksum is wrong.
   WriteFileAtomic(folder / kVolumeJsonName, VolumeJson(SmallVolume(), {}).dump(2));
-  const std::string bin_message = ErrorOf(folder);
+  const std::string bin_message = LoadErrorOf(folder);
   EXPECT_NE(bin_message.find("volume.bin: volume version 1 was written by an older voltree"), std::string::npos)
       << bin_message;
 
@@ -167,7 +167,8 @@ TEST(VolumeIo, AnOlderVersionAsksToReconstructAgain) {
   std::string bytes = EncodeVolumeBinary(SmallVolume());
   bytes[8] = 3;
   WriteFileAtomic(folder / kVolumeBinName, bytes);
-  EXPECT_NE(ErrorOf(folder).find("volume.bin: unsupported volume version 3"), std::string::npos) << ErrorOf(folder);
+  EXPECT_NE(LoadErrorOf(folder).find("volume.bin: unsupported volume version 3"), std::string::npos)
+      << LoadErrorOf(folder);
 }
 
 }  // namespace

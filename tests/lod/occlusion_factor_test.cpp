@@ -22,7 +22,7 @@ std::vector<Leaf> CubeOfLeaves() {
 }
 
 // A 64 x 64 pinhole looking along +y from (0, -5, 1).
-View LookingNorth() {
+View FromFiveUnitsSouth() {
   View view;
   view.camera = Camera::Pinhole(64, 64, 64, 64, 32, 32);
   view.pose = Pose::LookAt(Eigen::Vector3d(0, -5, 1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d::UnitZ());
@@ -31,7 +31,7 @@ View LookingNorth() {
 
 // A frame whose every pixel lies `distance` along the view axis.
 FrameDepth Wall(double distance) {
-  return FrameDepth(LookingNorth(), 64, 64, std::vector<float>(64 * 64, static_cast<float>(distance)));
+  return FrameDepth(FromFiveUnitsSouth(), 64, 64, std::vector<float>(64 * 64, static_cast<float>(distance)));
 }
 
 TEST(CrownHullSamples, LieOnTheOuterPlaneOfTheirDirection) {
@@ -64,7 +64,7 @@ TEST(FrameDepth, APointInFrontOfTheDepthIsVisibleAndOneBehindIsNot) {
   EXPECT_TRUE(wall.Visible(Eigen::Vector3d(0, 0.5, 1), 0.6));  // within the bias
   EXPECT_TRUE(wall.Visible(Eigen::Vector3d(0, -10, 1), 0));    // behind the camera: unknown, visible
   EXPECT_TRUE(wall.Visible(Eigen::Vector3d(50, 1, 1), 0));     // outside the viewport: visible
-  EXPECT_THROW(FrameDepth(LookingNorth(), 64, 64, std::vector<float>(10)), Error);
+  EXPECT_THROW(FrameDepth(FromFiveUnitsSouth(), 64, 64, std::vector<float>(10)), Error);
 }
 
 TEST(VisibleFraction, AWallInFrontHidesTheTreeAndOneBehindDoesNot) {
@@ -86,7 +86,7 @@ TEST(VisibleFraction, AWallOverTheLeftHalfOfTheFrameHidesTheLeftHalfOfTheCrown) 
   std::vector<float> distances(64 * 64, 20.0f);
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 32; ++x) distances[size_t(y) * 64 + x] = 3.0f;
-  const View view = LookingNorth();
+  const View view = FromFiveUnitsSouth();
   const Visibility half = VisibleFraction(samples, InstanceTransform{}, 1.0, FrameDepth(view, 64, 64, distances), {});
   int right = 0, tested = 0;
   for (const CrownSample& sample : samples) {

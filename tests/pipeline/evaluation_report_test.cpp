@@ -23,7 +23,12 @@ EvaluationReport TwoViewReport() {
     metrics.rgb_psnr = view[5] == 'a' ? 31 : 27;
     report.table.Add(LevelChoice{}, ViewSet::kHeldOut, view, metrics);
     const std::string stem = "eval/held_out/" + FlatStem(view);
-    report.comparisons.push_back({view, stem + "_truth.png", stem + "_voltree.png", stem + "_difference.png"});
+    ComparisonFiles files;
+    files.view = view;
+    files.truth = stem + "_truth.png";
+    files.render = stem + "_voltree.png";
+    files.difference = stem + "_difference.png";
+    report.comparisons.push_back(files);
   }
   report.pruning.levels = {{0, 10, 8, 20.0}, {1, 4, 4, NAN}};
   return report;

@@ -20,10 +20,10 @@ using test::WhiteAsset;
 
 namespace fs = std::filesystem;
 
-struct TempDir {
+struct SceneJobFolder {
   fs::path path = fs::temp_directory_path() / ("voltree_scene_job_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path / "assets"); }
-  ~TempDir() { fs::remove_all(path); }
+  SceneJobFolder() { fs::create_directories(path / "assets"); }
+  ~SceneJobFolder() { fs::remove_all(path); }
 };
 
 constexpr const char* kScene = R"({
@@ -34,7 +34,7 @@ constexpr const char* kScene = R"({
 })";
 
 TEST(SceneJob, OrbitOfAScene) {
-  TempDir temp;
+  SceneJobFolder temp;
   WriteFileAtomic(temp.path / "scene.json", kScene);
   WriteAsset(temp.path / "assets" / "cube.vtree", WhiteAsset());
   RenderJobOptions options;
@@ -61,7 +61,7 @@ TEST(SceneJob, OrbitOfAScene) {
 }
 
 TEST(SceneJob, TurntableVideo) {
-  TempDir temp;
+  SceneJobFolder temp;
   WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   RenderJobOptions options;
   options.asset = temp.path / "tree.vtree";
@@ -87,7 +87,7 @@ TEST(SceneJob, TurntableVideo) {
 }
 
 TEST(SceneJob, TurntableWithoutFfmpegSaysSo) {
-  TempDir temp;
+  SceneJobFolder temp;
   WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   RenderJobOptions options;
   options.asset = temp.path / "tree.vtree";

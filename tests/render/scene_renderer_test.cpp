@@ -29,7 +29,7 @@ Scene ThreeTrees(bool with_ground) {
   return scene;
 }
 
-View Camera(int size) {
+View OverTheScene(int size) {
   View view;
   view.camera = Camera::Pinhole(size, size, 0.9 * size, 0.9 * size, 0.5 * size, 0.5 * size);
   view.pose = Pose::LookAt(Eigen::Vector3d(0, -22, 9), Eigen::Vector3d(0, 4, 0), Eigen::Vector3d::UnitZ());
@@ -55,7 +55,7 @@ bool IsGround(const Image8& image, const Eigen::Vector2d& pixel) {
 TEST(SceneRenderer, InstancesAppearWhereTheyProjectAndTheGroundHidesWhatIsBelowIt) {
   GlContext context;
   constexpr int kSize = 160;
-  const View view = Camera(kSize);
+  const View view = OverTheScene(kSize);
   const std::vector<VtreeAsset> assets = {WhiteAsset({.views = 8, .eye_height = 1, .every_fine_cell = true})};
   SceneRenderer renderer(ThreeTrees(true), assets);
   SceneRenderOptions options;
@@ -97,12 +97,12 @@ TEST(SceneRenderer, CullsWhatIsBehindTheCamera) {
   scene.instances.push_back({0, {Eigen::Vector3d(0, -40, 0), 0, 1}});  // behind the eye at y = -22
   SceneRenderer renderer(scene, assets);
   SceneFrameStats stats;
-  renderer.Render(Camera(64), {}, &stats);
+  renderer.Render(OverTheScene(64), {}, &stats);
   EXPECT_EQ(stats.instances_drawn, 4u);
   EXPECT_EQ(stats.instances_culled, 1u);
   SceneRenderOptions no_cull;
   no_cull.cull = false;
-  renderer.Render(Camera(64), no_cull, &stats);
+  renderer.Render(OverTheScene(64), no_cull, &stats);
   EXPECT_EQ(stats.instances_drawn, 5u);
 }
 

@@ -19,10 +19,10 @@ using test::WhiteAsset;
 
 namespace fs = std::filesystem;
 
-struct TempDir {
+struct RenderJobFolder {
   fs::path path = fs::temp_directory_path() / ("voltree_render_job_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
+  RenderJobFolder() { fs::create_directories(path); }
+  ~RenderJobFolder() { fs::remove_all(path); }
 };
 
 TEST(RenderJob, ResizesCameras) {
@@ -39,7 +39,7 @@ TEST(RenderJob, ResizesCameras) {
 }
 
 TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
-  TempDir temp;
+  RenderJobFolder temp;
   WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   RenderJobOptions options;
   options.asset = temp.path / "tree.vtree";
@@ -69,7 +69,7 @@ TEST(RenderJob, OrbitWritesDeterministicFramesAndRefusesToOverwrite) {
 // Progressive assets: --max-level caps the levels loaded (beyond the asset it clamps, and says so);
 // a truncated file draws its whole levels and warns which are missing.
 TEST(RenderJob, MaxLevelAndTruncatedAssetsSayWhatIsDrawn) {
-  TempDir temp;
+  RenderJobFolder temp;
   const std::string bytes = SerializeAsset(WhiteAsset());  // levels 0..1
   WriteFileAtomic(temp.path / "tree.vtree", bytes);
   RenderJobOptions options;
@@ -103,7 +103,7 @@ TEST(RenderJob, MaxLevelAndTruncatedAssetsSayWhatIsDrawn) {
 }
 
 TEST(RenderJob, CamerasFromAColmapModelNameTheFrames) {
-  TempDir temp;
+  RenderJobFolder temp;
   WriteAsset(temp.path / "tree.vtree", WhiteAsset());
   ColmapModel model;
   model.cameras[1] = Camera::Pinhole(40, 30, 40, 40, 20, 15);

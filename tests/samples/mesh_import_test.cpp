@@ -102,7 +102,7 @@ class GltfBuilder {
 };
 
 // A 4x2 leaf texture with every kind of alpha, so straight (not premultiplied) storage shows.
-Image8 LeafTexture() {
+Image8 ImportedLeafTexture() {
   Image8 image(4, 2, 4);
   const uint8_t texels[8][4] = {{200, 100, 50, 255},  {10, 220, 30, 128}, {0, 0, 0, 0},   {90, 180, 40, 1},
                                 {255, 255, 255, 255}, {40, 80, 160, 64},  {5, 6, 7, 200}, {30, 200, 60, 0}};
@@ -262,7 +262,7 @@ TEST_F(MeshImportTest, MirroringNodeKeepsComputedNormalsOutward) {
 }
 
 TEST_F(MeshImportTest, GlbMaterialsAlphaModesAndEmbeddedTexture) {
-  const Image8 leaf = LeafTexture();
+  const Image8 leaf = ImportedLeafTexture();
   WriteImage(dir_ / "leaf_source.png", leaf);
   GltfBuilder gltf;
   const int positions = gltf.AddFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3);
@@ -309,7 +309,7 @@ TEST_F(MeshImportTest, GlbMaterialsAlphaModesAndEmbeddedTexture) {
 }
 
 TEST_F(MeshImportTest, GltfDataUriImageAndMissingExternalImage) {
-  WriteImage(dir_ / "leaf_source.png", LeafTexture());
+  WriteImage(dir_ / "leaf_source.png", ImportedLeafTexture());
   GltfBuilder gltf;
   const int positions = gltf.AddFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3);
   gltf.doc()["images"] = json::array({{{"uri", "data:image/png;base64," + Base64(ReadFile(dir_ / "leaf_source.png"))}},
@@ -328,8 +328,8 @@ TEST_F(MeshImportTest, GltfDataUriImageAndMissingExternalImage) {
   const fs::path path = Write("tree.gltf", gltf.Gltf());
   const TreeMesh mesh = Import(path);
   ASSERT_EQ(mesh.textures.size(), 2u);
-  EXPECT_EQ(mesh.textures[0], LeafTexture());
-  EXPECT_EQ(mesh.textures[1], LeafTexture());
+  EXPECT_EQ(mesh.textures[0], ImportedLeafTexture());
+  EXPECT_EQ(mesh.textures[1], ImportedLeafTexture());
   ASSERT_EQ(mesh.materials.size(), 3u);
   EXPECT_EQ(mesh.materials[1].texture, -1);
   EXPECT_EQ(mesh.materials[2].texture, 1);
@@ -412,7 +412,7 @@ TEST_F(MeshImportTest, ObjYUpRotatesToZUp) {
 }
 
 TEST_F(MeshImportTest, ObjLeafTextureWithAlphaBecomesMaskedDoubleSided) {
-  WriteImage(dir_ / "leaf.png", LeafTexture());
+  WriteImage(dir_ / "leaf.png", ImportedLeafTexture());
   Write("tree.mtl", "newmtl bark\nKd 0.4 0.3 0.2\nnewmtl leaf\nKd 0.8 0.8 0.8\nmap_Kd leaf.png\n");
   const fs::path path = Write("tree.obj",
                               "mtllib tree.mtl\n"
@@ -434,7 +434,7 @@ TEST_F(MeshImportTest, ObjLeafTextureWithAlphaBecomesMaskedDoubleSided) {
   EXPECT_EQ(leaf.alpha_mode, AlphaMode::kMask);
   EXPECT_TRUE(leaf.double_sided);
   ASSERT_EQ(leaf.texture, 0);
-  EXPECT_EQ(mesh.textures[0], LeafTexture());
+  EXPECT_EQ(mesh.textures[0], ImportedLeafTexture());
   EXPECT_EQ(leaf.base_color, Eigen::Vector4f::Ones());  // the texture replaces Kd
   // vt (0, 0) is OBJ's bottom-left; ours counts rows from the top.
   const MeshVertex& corner = mesh.vertices[mesh.groups[1].indices[0]];
@@ -552,7 +552,7 @@ TEST_F(MeshImportTest, BadFilesAreErrorsNamingThePath) {
 }
 
 TEST_F(MeshImportTest, SameFileGivesIdenticalMeshes) {
-  WriteImage(dir_ / "leaf.png", LeafTexture());
+  WriteImage(dir_ / "leaf.png", ImportedLeafTexture());
   Write("tree.mtl", "newmtl leaf\nmap_Kd leaf.png\n");
   const fs::path path = Write("tree.obj", std::string("mtllib tree.mtl\nusemtl leaf\n") + kTrunkObj);
   const TreeMesh first = Import(path), second = Import(path);
