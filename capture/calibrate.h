@@ -46,7 +46,7 @@ struct CalibrateOptions {
   // run in three of the photos-alone test; COLMAP's threads make runs differ).
   int min_pose_inliers = 15;
   // After mapping (capture/colmap_refine.h). Its two rounds took the eye-level ring's worst
-  // rotation error from 0.18 to 0.11 degrees (oak, 24 photos at 512², realistic backdrop).
+  // rotation error from 0.18 to 0.09-0.11 degrees (oak, 24 photos at 512², realistic backdrop).
   ModelRefinementOptions refine;
   double min_registered = 0.8;  // fraction of the photos that must register
   FeatureMask mask = FeatureMask::kAll;
