@@ -49,22 +49,6 @@ void CalibrateOptions::Check() const {
   hull.Check();
 }
 
-double MeanReprojectionError(const ColmapModel& model) {
-  double total = 0;
-  size_t count = 0;
-  for (const auto& [id, point] : model.points)
-    for (const auto& [image_id, index] : point.track) {
-      const auto image = model.images.find(image_id);
-      if (image == model.images.end() || index >= int(image->second.keypoints.size())) continue;
-      const View view{image->second.name, model.cameras.at(image->second.camera_id), image->second.pose};
-      Eigen::Vector2d pixel;
-      if (!view.WorldToPixel(point.position, &pixel)) continue;
-      total += (pixel - image->second.keypoints[index]).norm();
-      ++count;
-    }
-  return count ? total / double(count) : 0.0;
-}
-
 namespace {
 
 struct Bounds {

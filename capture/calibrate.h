@@ -80,8 +80,4 @@ CalibrateReport CalibrateWorkspace(const std::filesystem::path& workspace, const
 // when the mattes' visual hull is empty.
 void UpdateBoundsFromMattes(const std::filesystem::path& workspace, const HullOptions& hull, Progress& progress);
 
-// Mean distance in pixels between each observation and its 3D point's projection; 0 without
-// observations (a model stripped of its POINTS2D).
-double MeanReprojectionError(const ColmapModel& model);
-
 }  // namespace voltree

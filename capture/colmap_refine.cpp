@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "capture/calibrate.h"
 #include "capture/colmap_binary.h"
 #include "capture/colmap_runner.h"
 #include "core/error.h"

@@ -409,8 +409,7 @@ std::string ImagesText(const ColmapModel& model) {
 }
 
 std::string PointsText(const ColmapModel& model) {
-  size_t track_total = 0;
-  for (const auto& [id, point] : model.points) track_total += point.track.size();
+  const size_t track_total = ObservationCount(model);
   const double mean = model.points.empty() ? 0.0 : double(track_total) / double(model.points.size());
   std::string out =
       "# 3D point list with one line of data per point:\n"
@@ -479,6 +478,28 @@ void WriteColmapText(const fs::path& folder, const ColmapModel& model) {
     std::error_code ignored;
     fs::remove(folder / stale, ignored);
   }
+}
+
+size_t ObservationCount(const ColmapModel& model) {
+  size_t count = 0;
+  for (const auto& [id, point] : model.points) count += point.track.size();
+  return count;
+}
+
+double MeanReprojectionError(const ColmapModel& model) {
+  double total = 0;
+  size_t count = 0;
+  for (const auto& [id, point] : model.points)
+    for (const auto& [image_id, index] : point.track) {
+      const auto image = model.images.find(image_id);
+      if (image == model.images.end() || index >= int(image->second.keypoints.size())) continue;
+      const View view{image->second.name, model.cameras.at(image->second.camera_id), image->second.pose};
+      Eigen::Vector2d pixel;
+      if (!view.WorldToPixel(point.position, &pixel)) continue;
+      total += (pixel - image->second.keypoints[index]).norm();
+      ++count;
+    }
+  return count ? total / double(count) : 0.0;
 }
 
 }  // namespace voltree

@@ -41,6 +41,12 @@ struct ColmapModel {
   void Check() const;
 };
 
+// Observations over all points (the sum of their track lengths).
+size_t ObservationCount(const ColmapModel& model);
+// Mean distance in pixels between each observation and its 3D point's projection; 0 without
+// observations (a model stripped of its POINTS2D).
+double MeanReprojectionError(const ColmapModel& model);
+
 // Reads cameras.txt, images.txt and points3D.txt (points optional) from `folder`; also accepts the
 // rig-aware layout of newer COLMAP (rigs.txt, frames.txt beside them). Errors name file and line.
 ColmapModel ReadColmapText(const std::filesystem::path& folder);

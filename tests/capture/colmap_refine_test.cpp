@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <random>
 
-#include "capture/calibrate.h"
 #include "capture/calibrate_accuracy.h"
 #include "capture/colmap_refine.h"
 #include "capture/colmap_runner.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
+#include "temp_dir.h"
 
 namespace voltree {
 namespace {
@@ -62,12 +62,6 @@ ColmapModel RingModel(int views, int outlier_every, uint32_t seed) {
   return model;
 }
 
-size_t Observations(const ColmapModel& model) {
-  size_t count = 0;
-  for (const auto& [id, point] : model.points) count += point.track.size();
-  return count;
-}
-
 struct Outcome {
   RefinedModel refined;
   CameraAccuracy accuracy;
@@ -87,7 +81,8 @@ Outcome Refine(const fs::path& dir, const ColmapModel& model, const ColmapModel&
 TEST(ColmapRefine, DroppingFarObservationsBringsTheCamerasCloser) {
   const ColmapModel observed = RingModel(12, 8, 7);
   const ColmapModel truth = RingModel(12, 8, 7);  // the same cameras; its observations are not used
-  const fs::path dir = fs::path(::testing::TempDir()) / ("voltree_colmap_refine_" + std::to_string(::getpid()));
+  const testing::TempDir temp("colmap_refine");
+  const fs::path& dir = temp.path;
 
   // The baseline: bundle adjustment of every observation, as the mapper leaves the model.
   ModelRefinementOptions keep_all;
@@ -99,26 +94,26 @@ TEST(ColmapRefine, DroppingFarObservationsBringsTheCamerasCloser) {
       "bundle adjustment only: max rotation %.4f deg, centre %.4f %%; refined (%d rounds, %zu of %zu observations): "
       "%.4f deg, %.4f %%\n",
       adjusted.accuracy.max_rotation_degrees, 100 * adjusted.accuracy.max_center_error, refined.refined.rounds_taken,
-      Observations(refined.refined.model), Observations(observed), refined.accuracy.max_rotation_degrees,
+      ObservationCount(refined.refined.model), ObservationCount(observed), refined.accuracy.max_rotation_degrees,
       100 * refined.accuracy.max_center_error);
   ASSERT_EQ(refined.refined.rounds_taken, 2);
   EXPECT_EQ(refined.accuracy.matched, 12);
-  EXPECT_EQ(Observations(adjusted.refined.model), Observations(observed));  // the baseline kept everything
+  EXPECT_EQ(ObservationCount(adjusted.refined.model), ObservationCount(observed));  // the baseline kept everything
   // One in 8 observations is off: all 600 of them go, and almost none of the 4200 good ones.
-  EXPECT_LE(Observations(refined.refined.model), Observations(observed) * 7 / 8);
-  EXPECT_GE(Observations(refined.refined.model), Observations(observed) * 7 / 8 - 50);
+  EXPECT_LE(ObservationCount(refined.refined.model), ObservationCount(observed) * 7 / 8);
+  EXPECT_GE(ObservationCount(refined.refined.model), ObservationCount(observed) * 7 / 8 - 50);
   EXPECT_LT(MeanReprojectionError(refined.refined.model), 0.5 * MeanReprojectionError(observed));
   // Measured: 0.304 deg and 0.51 % with every observation, 0.064 deg and 0.11 % refined.
   EXPECT_LT(refined.accuracy.max_rotation_degrees, 0.1);
   EXPECT_LT(refined.accuracy.max_rotation_degrees, 0.5 * adjusted.accuracy.max_rotation_degrees);
   EXPECT_LT(refined.accuracy.max_center_error, 0.5 * adjusted.accuracy.max_center_error);
-  fs::remove_all(dir);
 }
 
 TEST(ColmapRefine, KnownIntrinsicsStayAsGiven) {
   ColmapModel observed = RingModel(8, 8, 11);
   observed.cameras[1] = Camera::Pinhole(320, 240, 310, 310, 160, 120);  // 3 % off: adjustment would move it
-  const fs::path dir = fs::path(::testing::TempDir()) / ("voltree_colmap_refine_k_" + std::to_string(::getpid()));
+  const testing::TempDir temp("colmap_refine_intrinsics");
+  const fs::path& dir = temp.path;
   ModelRefinementOptions options;
   options.keep_intrinsics = true;
   const Outcome kept = Refine(dir / "kept", observed, observed, options);
@@ -126,7 +121,6 @@ TEST(ColmapRefine, KnownIntrinsicsStayAsGiven) {
   options.keep_intrinsics = false;
   const Outcome moved = Refine(dir / "moved", observed, observed, options);
   EXPECT_GT(std::abs(moved.refined.model.cameras.at(1).FocalX() - 310), 1.0);
-  fs::remove_all(dir);
 }
 
 TEST(ColmapRefine, OptionsAreChecked) {
