@@ -182,9 +182,8 @@ std::vector<OptionSpec> CompressFlags() {
       {"--codebook",
        {"CompressOptions.colour_codebook"},
        "Colour codebook size (codewords of texels x texels; new viewpoints barely tell 64 from 4096, "
-       "the input views do: 64 and --alpha-codebook 64 with reconstruct --prune 0.995 and --zstd makes the demo oak "
-       "0.96 MiB, better from "
-       "new viewpoints than the defaults' 1.21 MiB)"},
+       "the input views do: 64 and --alpha-codebook 64 with reconstruct --prune 0.995 and --zstd "
+       "make the demo oak 0.96 MiB, better from new viewpoints than the defaults' 1.21 MiB)"},
       {"--alpha-codebook", {"CompressOptions.alpha_codebook"}, "Alpha codebook size"},
       {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
       {"--gla",
