@@ -38,14 +38,20 @@ void AddCompressCommand(CLI::App& app) {
   command->add_option("DIR", args->dir, "Capture workspace with a reconstruction in DIR/volume/")->required();
   AddOption(*command, "--output", args->options.output, "Output asset (default DIR/tree.vtree)");
   AddCompressOptions(*command, args->options.compress);
-  AddFlag(*command, "--zstd", args->options.zstd);
   AddFlag(*command, "--force", args->options.force, "Overwrite an existing output file");
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([args] {
     Progress progress(args->quiet);
-    const CompressStats stats = CompressWorkspace(args->dir, args->options, progress).stats;
-    WarnIfCodebookSmaller("--codebook", args->options.compress.colour_codebook, stats.colour.codebook.size());
-    WarnIfCodebookSmaller("--alpha-codebook", args->options.compress.alpha_codebook, stats.alpha.codebook.size());
+    const CompressWorkspaceResult result = CompressWorkspace(args->dir, args->options, progress);
+    WarnIfCodebookSmaller("--codebook", result.kept.colour_codebook, result.stats.colour.codebook.size());
+    WarnIfCodebookSmaller("--alpha-codebook", result.kept.alpha_codebook, result.stats.alpha.codebook.size());
+    if (!result.within_budget)
+      std::fprintf(stderr,
+                   "voltree: warning: %s is %llu bytes, over --max-bytes %llu even with codebooks %d / %d; "
+                   "reconstruct with fewer --levels or a lower --prune for a smaller asset\n",
+                   result.asset.string().c_str(), static_cast<unsigned long long>(result.bytes),
+                   static_cast<unsigned long long>(args->options.compress.max_bytes), result.kept.colour_codebook,
+                   result.kept.alpha_codebook);
   });
 }
 

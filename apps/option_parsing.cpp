@@ -48,6 +48,16 @@ uint64_t ParseCount(const std::string& option, const std::string& text) {
   return std::stoull(text);
 }
 
+uint64_t ParseBytes(const std::string& option, const std::string& text) {
+  static const std::regex kBytes(R"((\d{1,12})\s*(KiB|MiB|GiB)?)");
+  std::smatch match;
+  if (!std::regex_match(text, match, kBytes))
+    Fail(option, " '", text, "': expected bytes such as 1048576, 900KiB or 1MiB (0: no limit)");
+  const std::string unit = match[2].str();
+  const int shift = unit == "KiB" ? 10 : unit == "MiB" ? 20 : unit == "GiB" ? 30 : 0;
+  return std::stoull(match[1].str()) << shift;
+}
+
 std::array<float, 4> ParseBackground(const std::string& option, const std::string& text) {
   static const std::regex kRgb(R"((\d{1,3}),(\d{1,3}),(\d{1,3}))");
   std::smatch match;

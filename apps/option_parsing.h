@@ -18,6 +18,8 @@ int ParseLevels(const std::string& option, const std::string& text);
 std::vector<double> ParseNumbers(const std::string& option, const std::string& text);
 // "42" -> 42: digits only, no sign.
 uint64_t ParseCount(const std::string& option, const std::string& text);
+// "1048576", "1MiB", "900KiB", "2GiB" -> bytes (binary units; "0": none).
+uint64_t ParseBytes(const std::string& option, const std::string& text);
 // "R,G,B" with components 0..255 -> opaque straight RGBA in [0, 1].
 std::array<float, 4> ParseBackground(const std::string& option, const std::string& text);
 

@@ -153,8 +153,9 @@ std::vector<OptionSpec> ReconstructFlags() {
        "keeps)"},
       {"--prune",
        {"BillboardOptions.prune"},
-       "Hide a texel when the alpha accumulated in front of its cell exceeds this (higher keeps more billboards: "
-       "0.995 looks best from new viewpoints, about 0.6 dB above 0.95, for a quarter more on disk)"},
+       "Hide a texel when the alpha accumulated in front of its cell exceeds this (lower drops more billboards: "
+       "0.95 makes the demo oak's volume a fifth smaller and about 0.6 dB worse from new viewpoints; 1 hides "
+       "nothing, and a texel behind an opaque front then takes the front's colour)"},
       {"--billboard-scale",
        {"BillboardOptions.scale", "BillboardFitOptions.billboard_scale", "TreeRenderOptions.billboard_scale"},
        "Billboard side / cell edge (render: as given to reconstruct)"},
@@ -181,10 +182,14 @@ std::vector<OptionSpec> CompressFlags() {
   return {
       {"--codebook",
        {"CompressOptions.colour_codebook"},
-       "Colour codebook size (codewords of texels x texels; new viewpoints barely tell 64 from 4096, "
-       "the input views do: 64 and --alpha-codebook 64 with reconstruct --prune 0.995 and --zstd "
-       "make the demo oak 0.96 MiB, better from new viewpoints than the defaults' 1.21 MiB)"},
-      {"--alpha-codebook", {"CompressOptions.alpha_codebook"}, "Alpha codebook size"},
+       "Colour codebook size (codewords of texels x texels), the largest tried: both codebooks are halved "
+       "while the asset exceeds --max-bytes"},
+      {"--alpha-codebook", {"CompressOptions.alpha_codebook"}, "Alpha codebook size, the largest tried"},
+      {"--max-bytes",
+       {"CompressOptions.max_bytes"},
+       "Budget of the asset on disk, e.g. 1MiB or 500KiB (0: none): both codebooks are halved, down to 64, "
+       "until it fits (the demo oak: 64 / 64; new viewpoints barely tell 64 from 512 on a dense tree, its input "
+       "views do)"},
       {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
       {"--gla",
        {"CompressOptions.rule"},
@@ -195,7 +200,10 @@ std::vector<OptionSpec> CompressFlags() {
       {"--gla-tolerance", {"CompressOptions.tolerance"}, "Stop GLA when the relative distortion drop is below this"},
       {"--gla-iterations", {"CompressOptions.max_iterations"}, "At most this many GLA iterations"},
       {"--gla-seed", {"CompressOptions.seed"}, "Seed of the codebooks' k-means++ initialization"},
-      {"--zstd", {"CompressWorkspaceOptions.zstd"}, "Compress the asset's chunks with zstd on disk"},
+      {"--no-zstd",
+       {"CompressOptions.zstd"},
+       "Store the asset's chunks raw instead of zstd-compressed (about 8 % larger; what the web page reads, "
+       "which 'voltree web' writes itself)"},
   };
 }
 

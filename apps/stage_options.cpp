@@ -126,6 +126,11 @@ void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
   AddOption(command, "--gla-tolerance", compress.tolerance);
   AddOption(command, "--gla-iterations", compress.max_iterations);
   AddOption(command, "--gla-seed", compress.seed);
+  AddParsedOption<uint64_t>(
+      command, "--max-bytes", compress.max_bytes,
+      [](const std::string& text, uint64_t& bytes) { bytes = ParseBytes("--max-bytes", text); },
+      compress.max_bytes % (1 << 20) == 0 ? Str(compress.max_bytes >> 20, "MiB") : Str(compress.max_bytes));
+  AddFlag(command, "--no-zstd", compress.zstd);
 }
 
 void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Rate-distortion of the demo oak: asset bytes against held-out RGB PSNR and alpha PSNR, over
-# codebook sizes (colour / alpha) and the two on-disk layouts (raw chunks, `compress --zstd`).
-# For each pair of codebook sizes it runs `voltree compress` twice (raw and --zstd) into
+# codebook sizes (colour / alpha) and the two on-disk layouts (raw chunks, `compress --no-zstd`, and
+# zstd, the default). For each pair of codebook sizes it runs `voltree compress` twice (raw and zstd) into
 # OUT/assets/ (the workspace's own tree.vtree is never touched), reads each file's bytes on disk
 # and `voltree info`'s GPU-resident total, and runs `voltree eval` (held-out views, the renderer's
 # LOD) on it. The zstd file holds the same in-memory asset as the raw one (same codebooks, same
@@ -69,10 +69,10 @@ run_pair() { # colour alpha
   for layout in raw zstd; do
     file=$out/assets/$name.$layout.vtree
     local zflag=()
-    [[ $layout == zstd ]] && zflag=(--zstd)
+    [[ $layout == raw ]] && zflag=(--no-zstd)
     start=$(date +%s.%N)
     [[ -f $file ]] || "$voltree" compress "$ws" -o "$file" --codebook "$c" --alpha-codebook "$a" "${zflag[@]}" \
-      --force --quiet
+      --max-bytes 0 --force --quiet
     local compress_s
     compress_s=$(echo "$(date +%s.%N) - $start" | bc)
     "$voltree" info "$file" >"$out/info/$name.$layout.txt"
@@ -149,10 +149,10 @@ clauses() {
   local c=$1 d=$out list=()
   [[ -s $d/equal_raw.dat ]] && list+=("\"$d/equal_raw.dat\" using 1:$c with linespoints pt 7 lc rgb \"#1f77b4\" title \"raw chunks\""
     "\"$d/equal_raw.dat\" using 1:$c:4 with labels right offset -1.2,0 font \",8\" notitle")
-  [[ -s $d/equal_zstd.dat ]] && list+=("\"$d/equal_zstd.dat\" using 1:$c with linespoints pt 5 lc rgb \"#2ca02c\" title \"--zstd\"")
+  [[ -s $d/equal_zstd.dat ]] && list+=("\"$d/equal_zstd.dat\" using 1:$c with linespoints pt 5 lc rgb \"#2ca02c\" title \"zstd\"")
   [[ -s $d/unequal_raw.dat ]] && list+=("\"$d/unequal_raw.dat\" using 1:$c with points pt 6 ps 1.5 lc rgb \"#1f77b4\" title \"unequal colour/alpha (raw)\""
     "\"$d/unequal_raw.dat\" using 1:$c:4 with labels left offset 1.2,0 font \",8\" notitle")
-  [[ -s $d/unequal_zstd.dat ]] && list+=("\"$d/unequal_zstd.dat\" using 1:$c with points pt 4 ps 1.5 lc rgb \"#2ca02c\" title \"unequal colour/alpha (--zstd)\"")
+  [[ -s $d/unequal_zstd.dat ]] && list+=("\"$d/unequal_zstd.dat\" using 1:$c with points pt 4 ps 1.5 lc rgb \"#2ca02c\" title \"unequal colour/alpha (zstd)\"")
   list+=("\"$d/billboards.dat\" using 1:$c with points pt 9 ps 2 lc rgb \"#d62728\" title \"uncompressed billboards\""
     "\"$d/billboards.dat\" using 1:$c:(\"uncompressed billboards\") with labels right offset -1.5,0 font \",8\" notitle")
   local IFS=,

@@ -62,6 +62,8 @@ void CompressOptions::Check() const {
     FailOption("CompressOptions.black_threshold", "must be in 0..255, got ", black_threshold);
   if (!(tolerance >= 0 && tolerance < 1)) FailOption("CompressOptions.tolerance", "must be in [0, 1), got ", tolerance);
   if (max_iterations < 1) FailOption("CompressOptions.max_iterations", "must be at least 1, got ", max_iterations);
+  if (smallest_budget_codebook < 1 || smallest_budget_codebook > 65536)
+    FailOption("CompressOptions.smallest_budget_codebook", "must be in 1..65536, got ", smallest_budget_codebook);
   MakeGlaOptions(*this, colour_codebook, seed).Check();
 }
 

@@ -17,8 +17,8 @@
 namespace voltree {
 
 struct CompressOptions {
-  int colour_codebook = 512;  // Linz 2006 uses 512 (1024 for a low-contrast tree)
-  int alpha_codebook = 512;
+  int colour_codebook = 512;  // Linz 2006 uses 512 (1024 for a low-contrast tree); the largest tried
+  int alpha_codebook = 512;   // under max_bytes (compress/byte_budget.h)
   ColourSpace space = ColourSpace::kLab;
   CodewordRule rule = CodewordRule::kClosestMember;
   bool alpha_weighted = false;  // weight colour distances by texel alpha
@@ -26,9 +26,14 @@ struct CompressOptions {
   int max_iterations = 40;
   uint64_t seed = 1;
   int black_threshold = 4;  // a quantized texel with all channels <= this is "black"
+  // The file, which CompressVolume ignores: chunks zstd-compressed (the web page reads raw ones),
+  // and a budget in bytes (0: none) that the codebooks are halved to fit, not below the smallest.
+  bool zstd = true;
+  uint64_t max_bytes = uint64_t(1) << 20;
+  int smallest_budget_codebook = 64;
 
   void Check() const;
-  nlohmann::json ToJson() const;  // for the asset's provenance
+  nlohmann::json ToJson() const;  // for the asset's provenance: what shapes its content, not the file
 };
 
 struct CompressStats {

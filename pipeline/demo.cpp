@@ -98,13 +98,16 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   }
   timed("reconstruct", [&] { ReconstructWorkspace(workspace, {options.reconstruct}, progress); });
   CompressStats compress_stats;
+  CompressOptions compress_kept = options.compress;
   timed("compress", [&] {
     CompressWorkspaceOptions where;
     where.compress = options.compress;
     where.source_name = options.output.lexically_normal().filename().string();  // not the staging folder's
     if (where.source_name.empty())
       where.source_name = options.output.lexically_normal().parent_path().filename().string();
-    compress_stats = CompressWorkspace(workspace, where, progress).stats;
+    CompressWorkspaceResult compressed = CompressWorkspace(workspace, where, progress);
+    compress_stats = std::move(compressed.stats);
+    compress_kept = compressed.kept;
   });
   if (options.orbit.frames > 0)
     timed("orbit", [&] {
@@ -139,7 +142,11 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   summary["seconds"]["total"] = total;
   summary["texture_psnr_db"] = {{"vq", compress_stats.psnr_vq}, {"dxt5", compress_stats.psnr_dxt5}};
   summary["asset_bytes"] = fs::file_size(workspace / "tree.vtree");
-  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", options.compress.ToJson()}};
+  // The codebooks the byte budget kept, with the budget itself: what made the asset this size.
+  nlohmann::json compress_used = compress_kept.ToJson();
+  compress_used["max_bytes"] = options.compress.max_bytes;
+  compress_used["zstd"] = options.compress.zstd;
+  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", compress_used}};
   used["orbit"] = {{"frames", options.orbit.frames}, {"size", options.orbit.size}};
   used["evaluate"] = options.evaluate;
   summary["options"] = used;

@@ -31,7 +31,11 @@ StageRecipe ReconstructRecipe(const RunOptions& options) {
           options.reconstruct.ToJson().dump()};
 }
 StageRecipe CompressRecipe(const RunOptions& options) {
-  return {"compress", {"volume"}, {"tree.vtree"}, options.compress.ToJson().dump()};
+  nlohmann::json recipe = options.compress.ToJson();
+  recipe["zstd"] = options.compress.zstd;
+  recipe["max_bytes"] = options.compress.max_bytes;
+  recipe["smallest_budget_codebook"] = options.compress.smallest_budget_codebook;
+  return {"compress", {"volume"}, {"tree.vtree"}, recipe.dump()};
 }
 StageRecipe OrbitRecipe(const RunOptions& options) {
   // Recipes name paths inside the workspace; a report elsewhere is named absolutely.

@@ -27,7 +27,7 @@
 namespace voltree {
 
 struct BillboardOptions {
-  double prune = 0.95;                    // accumulated alpha in front above which a texel is hidden
+  double prune = 0.995;                   // accumulated alpha in front above which a texel is hidden
   double scale = 1.0;                     // billboard side / cell edge
   double epsilon = kDefaultAlphaEpsilon;  // of the optical depth; must be the tomography's (optical_depth.h)
 

@@ -34,6 +34,12 @@ TEST(OptionParsing, LevelsCountsAndNumbers) {
   EXPECT_THROW(ParseLevels("--levels", "0"), Error);
   EXPECT_THROW(ParseLevels("--levels", "many"), Error);
   EXPECT_EQ(ParseCount("--seed", "42"), 42u);
+  EXPECT_EQ(ParseBytes("--max-bytes", "1048576"), 1048576u);
+  EXPECT_EQ(ParseBytes("--max-bytes", "1MiB"), 1048576u);
+  EXPECT_EQ(ParseBytes("--max-bytes", "900KiB"), 921600u);
+  EXPECT_EQ(ParseBytes("--max-bytes", "2GiB"), uint64_t(2) << 30);
+  EXPECT_EQ(ParseBytes("--max-bytes", "0"), 0u);
+  for (const char* bad : {"1MB", "-1", "1.5MiB", "", "MiB"}) EXPECT_THROW(ParseBytes("--max-bytes", bad), Error) << bad;
   EXPECT_THROW(ParseCount("--seed", "-1"), Error);
   EXPECT_EQ(ParseNumbers("--distortion", "0.1,-0.02"), (std::vector<double>{0.1, -0.02}));
   EXPECT_THROW(ParseNumbers("--distortion", "0.1,x"), Error);

@@ -1,0 +1,39 @@
+// The largest codebooks whose asset fits a byte budget on disk.
+//
+// The codeword indices are most of an asset's bytes (a few bits per billboard, hundreds of
+// thousands of billboards), so the budget is met by halving both codebooks until the serialized
+// asset fits. New viewpoints barely tell 64 codewords from 512 on a dense tree, the input views
+// and sparse trees do: the codebooks stay as large as the budget allows, and a small tree keeps
+// the full size.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "compress/compress_volume.h"
+#include "core/progress.h"
+#include "core/volume.h"
+#include "core/vtree.h"
+
+namespace voltree {
+
+struct BudgetedCompression {
+  CompressResult result;  // the asset, its codebooks and statistics as kept
+  CompressOptions kept;   // the options of the attempt kept (its codebook sizes)
+  std::string bytes;      // the asset serialized
+  bool fits = true;       // false: over the budget even at the smallest codebooks tried
+  int attempts = 1;       // compressions run
+};
+
+// Finishes an asset (provenance) and serializes it; called once per attempt.
+using AssetSerializer = std::function<std::string(VtreeAsset&)>;
+
+// Compresses `volume` with the largest codebooks whose serialized asset fits options.max_bytes
+// (0: no budget, options' codebooks as given): options' sizes, or both halved, down to
+// options.smallest_budget_codebook. Deterministic: the same volume and options give the same
+// attempts and bytes.
+BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOptions& options,
+                                         const AssetSerializer& serialize, Progress* progress = nullptr);
+
+}  // namespace voltree
