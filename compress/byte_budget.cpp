@@ -42,9 +42,9 @@ BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOpt
     out.fits = options.max_bytes == 0 || out.bytes.size() <= options.max_bytes;
     out.attempts = ++attempts;
     if (progress && options.max_bytes != 0)
-      progress->Say("compress", Str(out.bytes.size(), " bytes with codebooks ", ladder[rung].first, " / ",
-                                    ladder[rung].second, (out.fits ? ": within" : ": over"), " the budget of ",
-                                    options.max_bytes, " bytes"));
+      progress->Say("compress",
+                    Str(out.bytes.size(), " bytes with codebooks ", ladder[rung].first, " / ", ladder[rung].second,
+                        (out.fits ? ": within" : ": over"), " the budget of ", options.max_bytes, " bytes"));
     return out;
   };
   // Smaller codebooks make smaller files (fewer bits per index), so the largest rung that fits is

@@ -133,30 +133,13 @@ LayerImage RasterizeLevel(const Volume& volume, int level, const View& camera, c
 
 namespace {
 
-// Premultiplied RGBA of one layer; `scale` maps stored texel values to [0, 1].
-template <typename Texel>
-std::array<float, 4> Sample(const BillboardLayer& layer, const Texel* texels, int n, float scale) {
-  std::array<float, 4> sum{0, 0, 0, 0};
-  const size_t dx = n > 1 ? 4 : 0, dy = n > 1 ? size_t(4) * n : 0;
-  for (const BillboardTap& tap : layer.taps) {
-    if (tap.weight == 0) continue;
-    const Texel* t = texels + size_t(tap.texel) * 4;
-    const float w00 = (1 - tap.fx) * (1 - tap.fy), w10 = tap.fx * (1 - tap.fy), w01 = (1 - tap.fx) * tap.fy,
-                w11 = tap.fx * tap.fy;
-    for (int c = 0; c < 4; ++c)
-      sum[c] += scale * tap.weight *
-                (w00 * float(t[c]) + w10 * float(t[dx + c]) + w01 * float(t[dy + c]) + w11 * float(t[dx + dy + c]));
-  }
-  return sum;
-}
-
 template <typename Texel>
 ImageF Composite(const LayerImage& image, const Texel* texels, float scale) {
   ImageF out(image.width, image.height, 4);
   for (size_t p = 0; p + 1 < image.offsets.size(); ++p) {
     std::array<float, 4> colour{0, 0, 0, 0};
     for (uint32_t i = image.offsets[p]; i < image.offsets[p + 1]; ++i) {
-      const std::array<float, 4> s = Sample(image.layers[i], texels, image.texels, scale);
+      const std::array<float, 4> s = SampleLayer(image.layers[i], texels, image.texels, scale);
       for (int c = 0; c < 4; ++c) colour[c] = s[c] + (1 - s[3]) * colour[c];
     }
     std::copy(colour.begin(), colour.end(), out.pixels.begin() + p * 4);
@@ -165,10 +148,6 @@ ImageF Composite(const LayerImage& image, const Texel* texels, float scale) {
 }
 
 }  // namespace
-
-std::array<float, 4> SampleLayer(const BillboardLayer& layer, const float* texels, int n) {
-  return Sample(layer, texels, n, 1.0f);
-}
 
 ImageF CompositeLayers(const LayerImage& image, const std::vector<float>& texels) {
   return Composite(image, texels.data(), 1.0f);

@@ -49,9 +49,24 @@ struct LayerImage {
 LayerImage RasterizeLevel(const Volume& volume, int level, const View& camera, const ViewBlend& blend,
                           double billboard_scale);
 
-// Premultiplied RGBA in [0, 1] of one layer from `texels` (premultiplied RGBA in [0, 1], four
-// floats per texel, indexed as BillboardTap::texel).
-std::array<float, 4> SampleLayer(const BillboardLayer& layer, const float* texels, int n);
+// Premultiplied RGBA of one layer from `texels` (premultiplied RGBA, four values per texel,
+// indexed as BillboardTap::texel); `scale` maps stored values to [0, 1]. Inline: the fit's inner
+// loop calls it once per layer of every pixel.
+template <typename Texel>
+inline std::array<float, 4> SampleLayer(const BillboardLayer& layer, const Texel* texels, int n, float scale = 1) {
+  std::array<float, 4> sum{0, 0, 0, 0};
+  const size_t dx = n > 1 ? 4 : 0, dy = n > 1 ? size_t(4) * n : 0;
+  for (const BillboardTap& tap : layer.taps) {
+    if (tap.weight == 0) continue;
+    const Texel* t = texels + size_t(tap.texel) * 4;
+    const float w00 = (1 - tap.fx) * (1 - tap.fy), w10 = tap.fx * (1 - tap.fy), w01 = (1 - tap.fx) * tap.fy,
+                w11 = tap.fx * tap.fy;
+    for (int c = 0; c < 4; ++c)
+      sum[c] += scale * tap.weight *
+                (w00 * float(t[c]) + w10 * float(t[dx + c]) + w01 * float(t[dy + c]) + w11 * float(t[dx + dy + c]));
+  }
+  return sum;
+}
 
 // The composited image (premultiplied RGBA in [0, 1] over transparent black).
 ImageF CompositeLayers(const LayerImage& image, const std::vector<float>& texels);

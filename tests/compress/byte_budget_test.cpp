@@ -40,7 +40,8 @@ TEST(ByteBudget, NoBudgetKeepsTheCodebooksAsGiven) {
 
 TEST(ByteBudget, KeepsTheLargestCodebooksThatFit) {
   const Volume volume = BudgetVolume();
-  const std::string at_256 = BudgetBytesAt(volume, 256), at_128 = BudgetBytesAt(volume, 128), at_64 = BudgetBytesAt(volume, 64);
+  const std::string at_256 = BudgetBytesAt(volume, 256), at_128 = BudgetBytesAt(volume, 128),
+                    at_64 = BudgetBytesAt(volume, 64);
   ASSERT_GT(at_256.size(), at_128.size());  // the premise of the bisection, on this volume
   ASSERT_GT(at_128.size(), at_64.size());
 
