@@ -12,6 +12,7 @@
 #include <regex>
 #include <unistd.h>
 
+#include "core/error.h"
 #include "core/files.h"
 #include "voltree_binary.h"
 
@@ -151,6 +152,27 @@ TEST_F(EvalCli, BudgetMeasuresEveryStepAndAgreesWithTheRenderer) {
 }
 
 // A failed evaluation (a held-out truth image is missing) leaves no report folder behind.
+// compress's byte budget through the binary: a budget just under the 128 / 128 asset keeps 64 / 64
+// and fits; the default writes zstd chunks, --no-zstd raw ones; the same budget, the same bytes.
+TEST_F(EvalCli, CompressKeepsTheLargestCodebooksUnderItsBudget) {
+  const std::string d = dir_.string();
+  const uintmax_t at_128 = fs::file_size(dir_ / "tree.vtree");
+  const std::string budgeted =
+      Str("compress ", d, " --codebook 128 --alpha-codebook 128 --max-bytes ", at_128 - 1, " --force --quiet -o ");
+  ASSERT_EQ(Voltree(budgeted + d + "/budget_a.vtree"), 0);
+  ASSERT_EQ(Voltree(budgeted + d + "/budget_b.vtree"), 0);
+  EXPECT_LT(fs::file_size(dir_ / "budget_a.vtree"), at_128);
+  EXPECT_TRUE(ReadFile(dir_ / "budget_a.vtree") == ReadFile(dir_ / "budget_b.vtree"));  // deterministic
+  test::Outcome info = test::VoltreeCaptured("info " + d + "/budget_a.vtree");
+  EXPECT_NE(info.output.find("codebooks: colour 64 (lab), alpha 64"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("(zstd, "), std::string::npos) << info.output;
+
+  ASSERT_EQ(Voltree(budgeted + d + "/budget_raw.vtree --no-zstd"), 0);
+  info = test::VoltreeCaptured("info " + d + "/budget_raw.vtree");
+  EXPECT_EQ(info.output.find("(zstd, "), std::string::npos) << info.output;
+  EXPECT_GT(fs::file_size(dir_ / "budget_raw.vtree"), fs::file_size(dir_ / "budget_a.vtree"));
+}
+
 TEST_F(EvalCli, AFailedRunLeavesNoEmptyReport) {
   fs::rename(dir_ / "truth" / "rgba" / "held_001.png", dir_ / "held_001.png.aside");
   const fs::path report = dir_ / "failed_report";
