@@ -324,6 +324,11 @@ std::vector<OptionSpec> EvaluateFlags() {
       {"--grey",
        {"ImageMetricsOptions.background_grey"},
        "Grey (0..255) that truth and render are composited over for the RGB metrics"},
+      {"--distance",
+       {"EvaluateOptions.distance"},
+       "Judge the asset from this many times the cameras' distance: renders at 1/K of the photos' size, so the "
+       "LOD draws what it would there, against the truth area-resampled to it (1.6: the demo oak a third of the "
+       "frame's height)"},
       {"--eval-levels",
        {"EvaluateOptions.each_level"},
        "Which renders eval measures: all (the renderer's LOD and each octree level forced) or auto (only the LOD, "

@@ -141,6 +141,7 @@ void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit) {
 void AddEvaluateOptions(CLI::App& command, EvaluateOptions& evaluate) {
   AddOption(command, "--grey", evaluate.metrics.background_grey);
   AddChoice(command, "--eval-levels", evaluate.each_level, {{"all", true}, {"auto", false}});
+  AddOption(command, "--distance", evaluate.distance);
   AddFlag(command, "--no-input", evaluate.input_views);
   AddFlag(command, "--no-images", evaluate.images);
   AddFlag(command, "--no-plots", evaluate.plots);

@@ -69,6 +69,14 @@ EvaluationTruth GatherTruth(const fs::path& workspace, const EvaluateOptions& op
                               "input views only, which measures self-consistency, not generalization"));
   if (options.input_views) truth.inputs = InputTruth(workspace);
   if (!truth.held_out && truth.inputs.empty()) Fail("eval: nothing to compare: no truth/ and input views are off");
+  if (options.distance != 1) {
+    if (truth.held_out) truth.held_out = SeenFromFarther(std::move(*truth.held_out), options.distance);
+    truth.inputs = SeenFromFarther(std::move(truth.inputs), options.distance);
+    const std::vector<TruthView>& any = truth.held_out ? *truth.held_out : truth.inputs;
+    truth.notes.push_back(Str("every view seen from ", options.distance, " times the cameras' distance: rendered at ",
+                              any.front().camera.camera.width, "x", any.front().camera.camera.height,
+                              ", the truth area-resampled to it"));
+  }
   return truth;
 }
 
@@ -179,6 +187,10 @@ void EvaluateOptions::Check() const {
   if (lod.forced_level >= 0)
     Fail("eval: lod.forced_level = ", lod.forced_level, "; per-level renders are chosen by each_level");
   if (!(difference_gain > 0)) Fail("eval: difference_gain = ", difference_gain, ", expected > 0");
+  if (!(distance >= 1 && distance <= 64)) FailOption("EvaluateOptions.distance", "must be in [1, 64], got ", distance);
+  if (budget && distance != 1)
+    FailOption("EvaluateOptions.distance", "the error budget (--budget) is measured at the photos' own size; got ",
+               distance);
 }
 
 EvaluateResult EvaluateWorkspace(const fs::path& workspace, const EvaluateOptions& options, Progress& progress) {

@@ -28,12 +28,15 @@ struct EvaluateOptions {
   // Fixed grey (8-bit units) that truth and render are composited over for the RGB metrics, the
   // alpha threshold of "covered" pixels, SSIM window. Premultiplication is set per view.
   ImageMetricsOptions metrics;
-  LodOptions lod;             // the "auto" renders (screen rule, a texel per pixel)
-  bool each_level = true;     // also render every octree level forced, 0..finest
-  bool input_views = true;    // also compare at the input cameras (self-consistency)
-  bool images = true;         // side-by-side PNGs of the held-out views
-  bool plots = true;          // gnuplot PNGs (skipped with a note when gnuplot is missing)
-  bool budget = false;        // also measure the error budget (error_budget.h; needs WORKSPACE/volume)
+  LodOptions lod;           // the "auto" renders (screen rule, a texel per pixel)
+  bool each_level = true;   // also render every octree level forced, 0..finest
+  bool input_views = true;  // also compare at the input cameras (self-consistency)
+  bool images = true;       // side-by-side PNGs of the held-out views
+  bool plots = true;        // gnuplot PNGs (skipped with a note when gnuplot is missing)
+  bool budget = false;      // also measure the error budget (error_budget.h; needs WORKSPACE/volume)
+  // Judge the views from this many times the cameras' distance (SeenFromFarther): renders at
+  // 1/distance of the photos' size against the truth area-resampled to it. 1: as photographed.
+  double distance = 1;
   float difference_gain = 4;  // the difference images show |truth - render| x gain
   // Optional measured series for plots; empty: REPORT/codebook_sweep.json, REPORT/scene_bench.json
   // when they exist (formats in docs/evaluate.md).

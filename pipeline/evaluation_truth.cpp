@@ -1,8 +1,13 @@
 #include "pipeline/evaluation_truth.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "capture/calibrate_accuracy.h"
 #include "core/colmap_model.h"
 #include "core/error.h"
+#include "core/image_resample.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -25,9 +30,17 @@ std::vector<View> ModelViews(const fs::path& sparse) {
 }
 
 void CheckSize(const Image8& image, const TruthView& view, const fs::path& file) {
-  if (image.width != view.camera.camera.width || image.height != view.camera.camera.height)
-    Fail(file.string(), ": is ", image.width, "x", image.height, ", expected the camera's ", view.camera.camera.width,
-         "x", view.camera.camera.height, " (view '", view.camera.name, "')");
+  const int width = view.photo_width > 0 ? view.photo_width : view.camera.camera.width;
+  const int height = view.photo_height > 0 ? view.photo_height : view.camera.camera.height;
+  if (image.width != width || image.height != height)
+    Fail(file.string(), ": is ", image.width, "x", image.height, ", expected the camera's ", width, "x", height,
+         " (view '", view.camera.name, "')");
+}
+
+// At the camera's size: the photo's own, or area-resampled to a camera seen from farther.
+Image8 AtCameraSize(Image8 rgba, const TruthView& view) {
+  if (rgba.width == view.camera.camera.width && rgba.height == view.camera.camera.height) return rgba;
+  return AreaResampleRgba(rgba, view.premultiplied, view.camera.camera.width, view.camera.camera.height);
 }
 
 }  // namespace
@@ -36,7 +49,7 @@ Image8 LoadTruthImage(const TruthView& view) {
   if (!fs::exists(view.colour)) Fail(view.colour.string(), ": missing truth image for view '", view.camera.name, "'");
   Image8 rgba = ReadImage8(view.colour, view.matte.empty() ? 4 : 3);
   CheckSize(rgba, view, view.colour);
-  if (view.matte.empty()) return rgba;
+  if (view.matte.empty()) return AtCameraSize(std::move(rgba), view);
   if (!fs::exists(view.matte)) Fail(view.matte.string(), ": missing matte for view '", view.camera.name, "'");
   const Image8 matte = ReadImage8(view.matte, 1);
   CheckSize(matte, view, view.matte);
@@ -46,7 +59,20 @@ Image8 LoadTruthImage(const TruthView& view) {
       for (int c = 0; c < 3; ++c) straight.at(x, y, c) = rgba.at(x, y, c);
       straight.at(x, y, 3) = matte.at(x, y);
     }
-  return straight;
+  return AtCameraSize(std::move(straight), view);
+}
+
+std::vector<TruthView> SeenFromFarther(std::vector<TruthView> views, double distance) {
+  if (!(distance >= 1)) Fail("eval: distance ", distance, ": expected 1 or more (times the cameras' distance)");
+  if (distance == 1) return views;
+  for (TruthView& view : views) {
+    const Camera& camera = view.camera.camera;
+    if (view.photo_width == 0) view.photo_width = camera.width, view.photo_height = camera.height;
+    const int width = std::max(1, int(std::lround(camera.width / distance)));
+    const int height = std::max(1, int(std::lround(camera.height / distance)));
+    view.camera.camera = camera.Resized(width, height);
+  }
+  return views;
 }
 
 std::optional<std::vector<TruthView>> HeldOutTruth(const fs::path& workspace) {

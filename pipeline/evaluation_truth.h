@@ -26,11 +26,20 @@ struct TruthView {
   std::filesystem::path matte;   // empty, or the alpha of a photo
   bool premultiplied = false;    // of the image LoadTruthImage returns
   std::filesystem::path parts;   // empty, or truth/parts/NAME.png: coverage of bark (R) and leaves (G)
+  // The files' size when the camera was shrunk (SeenFromFarther); 0: the camera's own size.
+  int photo_width = 0, photo_height = 0;
 };
 
-// Straight or premultiplied RGBA (see TruthView::premultiplied) of the camera's size; Error names
-// the file when it is missing or has another size.
+// Straight or premultiplied RGBA (see TruthView::premultiplied) of the camera's size, area-
+// resampled from the photo's when the view is seen from farther; Error names the file when it is
+// missing or has another size.
 Image8 LoadTruthImage(const TruthView& view);
+
+// The views as cameras `distance` times farther away see them: each camera's image shrunk to
+// 1/distance of its size (focal length and principal point with it, so the tree covers the pixels
+// it would from there and the LOD picks what it would draw), the truth area-resampled to match.
+// Perspective is the camera's own: only the pixel footprint changes.
+std::vector<TruthView> SeenFromFarther(std::vector<TruthView> views, double distance);
 
 // The studio's held-out views (with their parts masks when truth/parts/ has them); nothing when
 // WORKSPACE/truth/ does not exist. Errors name the

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/image_resample.h"
 #include "reconstruct/billboard_raster.h"
 
 namespace voltree {
@@ -21,35 +22,6 @@ ImageF PhotoTarget(const Image8& matte, const Image8& foreground) {
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = foreground.at(x, y, c) / 255.0f;
       out.at(x, y, 3) = matte.at(x, y) / 255.0f;
     }
-  return out;
-}
-
-// Exact area average onto a coarser grid (each output pixel the mean of the input area it covers).
-ImageF AreaResample(const ImageF& in, int width, int height) {
-  if (width == in.width && height == in.height) return in;
-  auto weights = [](int from, int to) {  // per output index: (input index, weight) pairs
-    std::vector<std::vector<std::pair<int, float>>> out(to);
-    const double step = double(from) / to;
-    for (int o = 0; o < to; ++o) {
-      const double a = o * step, b = (o + 1) * step;
-      for (int i = int(std::floor(a)); i < std::min(from, int(std::ceil(b))); ++i) {
-        const double overlap = std::min(b, i + 1.0) - std::max(a, double(i));
-        if (overlap > 0) out[o].push_back({i, float(overlap / step)});
-      }
-    }
-    return out;
-  };
-  const auto wx = weights(in.width, width), wy = weights(in.height, height);
-  ImageF rows(width, in.height, in.channels);
-  for (int y = 0; y < in.height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (auto [i, w] : wx[x])
-        for (int c = 0; c < in.channels; ++c) rows.at(x, y, c) += w * in.at(i, y, c);
-  ImageF out(width, height, in.channels);
-  for (int y = 0; y < height; ++y)
-    for (auto [j, w] : wy[y])
-      for (int x = 0; x < width; ++x)
-        for (int c = 0; c < in.channels; ++c) out.at(x, y, c) += w * rows.at(x, j, c);
   return out;
 }
 

@@ -173,6 +173,29 @@ TEST_F(EvalCli, CompressKeepsTheLargestCodebooksUnderItsBudget) {
   EXPECT_GT(fs::file_size(dir_ / "budget_raw.vtree"), fs::file_size(dir_ / "budget_a.vtree"));
 }
 
+// --distance K: the views as seen from K times farther, rendered at 1/K of the photos' size against
+// the truth area-resampled to it; the budget is refused at any other distance than 1.
+TEST_F(EvalCli, JudgesTheAssetFromFartherAway) {
+  const std::string d = dir_.string();
+  ASSERT_EQ(Voltree("eval " + d + " --distance 2 --eval-levels auto --no-images --no-plots --report " + d +
+                    "/far --quiet > /dev/null"),
+            0);
+  const nlohmann::json metrics = nlohmann::json::parse(ReadFile(dir_ / "far" / "metrics.json"));
+  EXPECT_NE(metrics.at("notes").dump().find("seen from 2 times the cameras' distance: rendered at 64x64"),
+            std::string::npos)
+      << metrics.at("notes").dump();
+  const nlohmann::json& far = metrics.at("overall").at("held_out");
+  // Measured on this set: 28.13 dB RGB, 18.79 dB alpha, recall 0.875 (at the photos' size 26.64 / 17.40 / 0.870).
+  EXPECT_GT(far.at("rgb_psnr").at("mean").get<double>(), 27.0);
+  EXPECT_GT(far.at("recall").at("mean").get<double>(), 0.84);
+
+  const test::Outcome refused = test::VoltreeCaptured("eval " + d + " --distance 2 --budget --report " + d + "/far2");
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.output.find("--distance"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("--budget"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(dir_ / "far2"));
+}
+
 TEST_F(EvalCli, AFailedRunLeavesNoEmptyReport) {
   fs::rename(dir_ / "truth" / "rgba" / "held_001.png", dir_ / "held_001.png.aside");
   const fs::path report = dir_ / "failed_report";
