@@ -152,10 +152,10 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   summary["options"] = used;
   WriteFileAtomic(workspace / kSummary, summary.dump(2) + "\n");
   InstallDemoFolder(workspace, options.output, options.force);
-  progress.Say("demo", Str("done in ", std::round(total * 10) / 10, " s: ", options.output.string(), " (asset ",
-                           (options.output / "tree.vtree").string(), ", ", summary["asset_bytes"].get<uint64_t>(),
-                           " bytes, codebooks ", compress_kept.colour_codebook, " / ", compress_kept.alpha_codebook,
-                           ")"));
+  progress.Say("demo",
+               Str("done in ", std::round(total * 10) / 10, " s: ", options.output.string(), " (asset ",
+                   (options.output / "tree.vtree").string(), ", ", summary["asset_bytes"].get<uint64_t>(),
+                   " bytes, codebooks ", compress_kept.colour_codebook, " / ", compress_kept.alpha_codebook, ")"));
   result.summary = options.output / kSummary;
   result.seconds = total;
   return result;
