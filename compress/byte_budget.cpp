@@ -41,7 +41,7 @@ BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOpt
     out.result = CompressVolume(volume, out.kept, progress);
     out.bytes = serialize(out.result.asset);
     out.fits = options.max_bytes == 0 || out.bytes.size() <= options.max_bytes;
-    out.attempts = ++attempts;
+    ++attempts;
     if (progress && options.max_bytes != 0)
       progress->Say("compress",
                     Str(out.bytes.size(), " bytes with codebooks ", ladder[rung].first, " / ", ladder[rung].second,

@@ -75,6 +75,14 @@ nlohmann::json CompressOptions::ToJson() const {
           {"black_threshold", black_threshold}};
 }
 
+nlohmann::json CompressOptions::SettingsJson() const {
+  nlohmann::json settings = ToJson();
+  settings["zstd"] = zstd;
+  settings["max_bytes"] = max_bytes;
+  settings["smallest_budget_codebook"] = smallest_budget_codebook;
+  return settings;
+}
+
 std::vector<uint8_t> DecodeBillboardsFromCodewords(const std::vector<uint8_t>& colour_rgb,
                                                    const std::vector<uint8_t>& alpha_bytes, int texels,
                                                    const std::vector<CodewordUse>& uses) {

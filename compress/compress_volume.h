@@ -33,7 +33,8 @@ struct CompressOptions {
   int smallest_budget_codebook = 64;
 
   void Check() const;
-  nlohmann::json ToJson() const;  // for the asset's provenance: what shapes its content, not the file
+  nlohmann::json ToJson() const;        // for the asset's provenance: what shapes its content, not the file
+  nlohmann::json SettingsJson() const;  // ToJson() and the file's settings: what run's recipe and demo.json record
 };
 
 struct CompressStats {

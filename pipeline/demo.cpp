@@ -143,10 +143,7 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   summary["texture_psnr_db"] = {{"vq", compress_stats.psnr_vq}, {"dxt5", compress_stats.psnr_dxt5}};
   summary["asset_bytes"] = fs::file_size(workspace / "tree.vtree");
   // The codebooks the byte budget kept, with the budget itself: what made the asset this size.
-  nlohmann::json compress_used = compress_kept.ToJson();
-  compress_used["max_bytes"] = options.compress.max_bytes;
-  compress_used["zstd"] = options.compress.zstd;
-  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", compress_used}};
+  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", compress_kept.SettingsJson()}};
   used["orbit"] = {{"frames", options.orbit.frames}, {"size", options.orbit.size}};
   used["evaluate"] = options.evaluate;
   summary["options"] = used;

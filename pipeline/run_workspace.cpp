@@ -31,11 +31,7 @@ StageRecipe ReconstructRecipe(const RunOptions& options) {
           options.reconstruct.ToJson().dump()};
 }
 StageRecipe CompressRecipe(const RunOptions& options) {
-  nlohmann::json recipe = options.compress.ToJson();
-  recipe["zstd"] = options.compress.zstd;
-  recipe["max_bytes"] = options.compress.max_bytes;
-  recipe["smallest_budget_codebook"] = options.compress.smallest_budget_codebook;
-  return {"compress", {"volume"}, {"tree.vtree"}, recipe.dump()};
+  return {"compress", {"volume"}, {"tree.vtree"}, options.compress.SettingsJson().dump()};
 }
 StageRecipe OrbitRecipe(const RunOptions& options) {
   // Recipes name paths inside the workspace; a report elsewhere is named absolutely.
