@@ -45,7 +45,7 @@ void AddCompressCommand(CLI::App& app) {
     const CompressWorkspaceResult result = CompressWorkspace(args->dir, args->options, progress);
     WarnIfCodebookSmaller("--codebook", result.kept.colour_codebook, result.stats.colour.codebook.size());
     WarnIfCodebookSmaller("--alpha-codebook", result.kept.alpha_codebook, result.stats.alpha.codebook.size());
-    if (!result.within_budget)
+    if (!result.within_budget && args->quiet)  // else the progress lines already said it
       std::fprintf(stderr,
                    "voltree: warning: %s is %llu bytes, over --max-bytes %llu even with codebooks %d / %d; "
                    "reconstruct with fewer --levels or a lower --prune for a smaller asset\n",

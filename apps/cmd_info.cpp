@@ -39,9 +39,10 @@ void AddInfoCommand(CLI::App& app) {
                     static_cast<unsigned long long>(chunk.offset + chunk.stored_bytes));
         continue;
       }
-      std::printf("  %s at byte %llu: %llu bytes%s\n", chunk.tag.c_str(), static_cast<unsigned long long>(chunk.offset),
-                  static_cast<unsigned long long>(chunk.stored_bytes),
-                  chunk.zstd ? Str(" (zstd, ", chunk.raw_bytes, " raw)").c_str() : "");
+      std::printf(
+          "  %s at byte %llu: %llu bytes%s\n", chunk.tag.c_str(), static_cast<unsigned long long>(chunk.offset),
+          static_cast<unsigned long long>(chunk.stored_bytes),
+          chunk.zstd ? Str(" (", chunk.raw_bytes, " raw bytes in ", chunk.payload_bytes, " of zstd)").c_str() : "");
     }
     // Progressive order: a reader holding the first N bytes draws every level whose BBRD ends by N.
     std::printf("progressive: level drawable from the first N bytes\n");

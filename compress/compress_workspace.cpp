@@ -32,7 +32,8 @@ CompressWorkspaceResult CompressWorkspace(const fs::path& workspace, const Compr
     progress.Say("compress",
                  Str("warning: ", budgeted.bytes.size(), " bytes, over the budget of ", options.compress.max_bytes,
                      " bytes even with codebooks ", budgeted.result.stats.colour.codebook.size(), " / ",
-                     budgeted.result.stats.alpha.codebook.size()));
+                     budgeted.result.stats.alpha.codebook.size(),
+                     "; reconstruct with fewer --levels or a lower --prune for a smaller asset"));
   return {output, budgeted.bytes.size(), budgeted.fits, budgeted.kept, std::move(budgeted.result.stats)};
 }
 

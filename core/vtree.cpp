@@ -688,14 +688,14 @@ std::vector<VtreeChunkInfo> ListChunks(std::string_view bytes, const std::string
       const uint64_t stored = peek.Le<uint64_t>("chunk size");
       cut.raw_bytes = peek.Le<uint64_t>("chunk raw size");
       if (stored > file.remaining() - kChunkHeaderBytes) {
-        cut.stored_bytes = kChunkHeaderBytes + stored;
+        cut.stored_bytes = kChunkHeaderBytes + stored, cut.payload_bytes = stored;
         chunks.push_back(cut);
         break;
       }
     }
     const Chunk chunk = ReadChunkHeader(file);
-    chunks.push_back(
-        {chunk.tag, chunk.offset, kChunkHeaderBytes + chunk.stored_size, chunk.raw_size, chunk.encoding == kZstd});
+    chunks.push_back({chunk.tag, chunk.offset, kChunkHeaderBytes + chunk.stored_size, chunk.stored_size, chunk.raw_size,
+                      chunk.encoding == kZstd});
   }
   return chunks;
 }

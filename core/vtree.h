@@ -141,7 +141,10 @@ VtreeAsset ReadAsset(const std::filesystem::path& path, const VtreeReadOptions& 
 // Per-chunk sizes as stored, for `voltree info`.
 struct VtreeChunkInfo {
   std::string tag;
-  uint64_t offset = 0, stored_bytes = 0, raw_bytes = 0;
+  uint64_t offset = 0;
+  uint64_t stored_bytes = 0;   // in the file, the chunk's header included
+  uint64_t payload_bytes = 0;  // stored_bytes less the header: what zstd (or nothing) made of raw_bytes
+  uint64_t raw_bytes = 0;      // the payload decoded
   bool zstd = false;
   bool complete = true;  // false: cut off by the end of the file (only with allow_partial; then last)
 };

@@ -95,6 +95,13 @@ TEST(Vtree, TruncatedAtEveryChunkBoundaryAndRandomOffsets) {
     const std::string bytes = SerializeAsset(Asset(), options);
     std::vector<size_t> cuts = {0, 4, 8, 11, 12, 13};
     for (const auto& chunk : ListChunks(bytes, "tree.vtree")) {
+      // The listing separates the 28-byte header from the payload, and zstd is kept only where it saves.
+      EXPECT_EQ(chunk.stored_bytes - chunk.payload_bytes, 28u) << chunk.tag;
+      if (chunk.zstd) {
+        EXPECT_LT(chunk.payload_bytes, chunk.raw_bytes) << chunk.tag;
+      } else {
+        EXPECT_EQ(chunk.payload_bytes, chunk.raw_bytes) << chunk.tag;
+      }
       for (size_t delta : {0, 1, 4, 27, 28, 29}) cuts.push_back(chunk.offset + delta);
       cuts.push_back(chunk.offset + chunk.stored_bytes - 1);
     }
