@@ -37,6 +37,7 @@ void MatteOptions::Check() const {
     FailOption("MatteOptions.leaf_search", "must be in (0, 0.5], got ", leaf_search);
   if (!(leaf_purity > 0.0 && leaf_purity <= 1.0))
     FailOption("MatteOptions.leaf_purity", "must be in (0, 1], got ", leaf_purity);
+  if (!(gap_distance > 0.0)) FailOption("MatteOptions.gap_distance", "must be positive, got ", gap_distance);
   if (grabcut_max_side < 64) FailOption("MatteOptions.grabcut_max_side", "must be at least 64, got ", grabcut_max_side);
   if (guided_radius < 1 || guided_radius > 32)
     FailOption("MatteOptions.guided_radius", "must be in [1, 32], got ", guided_radius);

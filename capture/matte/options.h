@@ -43,6 +43,12 @@ struct MatteOptions {
   // GrabCut settles the edges of the trunk below the horizon, after a nearest-neighbour colour
   // test (bark above the ground versus ground away from the trunk) found it; off: the test alone.
   bool ground_grabcut = true;
+  // Below the horizon, pixels of GrabCut's tree whose colour is within `gap_distance` (Lab) of
+  // the photo's own ground are left to the solver: GrabCut closes the gaps of a sparse crown
+  // (35° ring, each photo alone: young oak MSE 0.098 -> 0.0014, oak 0.0023 -> 0.0005). 10 keeps
+  // more of the aspen's thin branches than 16 (held-out recall 0.840 against 0.819).
+  bool open_gaps = true;
+  double gap_distance = 10.0;
   // Trunk separation runs on a copy whose longer side is at most this (GrabCut is slow on photos).
   int grabcut_max_side = 512;
   // Guided filter radius (pixels at 256 px, scaled with the image) and regularization.

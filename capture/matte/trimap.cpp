@@ -149,6 +149,22 @@ cv::Mat SeparateTrunkFromGround(const cv::Mat& rgb, const cv::Mat& alpha, const 
   return full;
 }
 
+// GrabCut's smoothness closes a sparse crown: the ground seen through its gaps, and patches of
+// ground next to the tree, come out as tree. CV_8U 255 where a pixel of `tree` (CV_8U) shows a
+// colour within `tolerance` (Lab) of this photo's own ground (`ground`, away from the tree). Empty
+// when that leaves less than a tenth of the tree: then nothing would seed the solver.
+cv::Mat GroundColouredInTree(const cv::Mat& lab, const cv::Mat& tree, const cv::Mat& ground, float tolerance) {
+  cv::Mat coloured = cv::Mat::zeros(tree.size(), CV_8U);
+  const std::vector<cv::Vec3f> ground_colours = Samples(lab, ground & ~tree, 1024);
+  if (ground_colours.empty()) return coloured;
+  for (int y = 0; y < lab.rows; ++y)
+    for (int x = 0; x < lab.cols; ++x)
+      if (tree.at<uint8_t>(y, x) && NearestSquared(lab.at<cv::Vec3f>(y, x), ground_colours) < tolerance * tolerance)
+        coloured.at<uint8_t>(y, x) = 255;
+  if (10 * (cv::countNonZero(tree) - cv::countNonZero(coloured)) < cv::countNonZero(tree)) coloured.setTo(0);
+  return coloured;
+}
+
 // No sky in the photo (a camera looking down): the background is ground everywhere. GrabCut
 // from the frame: a border strip is certain ground, the rest probably tree. CV_8U 255 = tree.
 cv::Mat CutFromGround(const cv::Mat& rgb, const MatteOptions& options) {
@@ -277,6 +293,12 @@ Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options) {
     cv::Mat ground_trimap(rgb.size(), CV_8U, cv::Scalar(128));
     ground_trimap.setTo(0, outside == 0);
     ground_trimap.setTo(255, inside);
+    if (options.open_gaps) {
+      // Left to the solver, not called background: where the colour test is wrong (bark like
+      // soil) the tree around it still pulls alpha up.
+      const cv::Mat gaps = GroundColouredInTree(lab, inside, (outside == 0) & ground, float(options.gap_distance));
+      ground_trimap.setTo(128, gaps);
+    }
     ground_trimap.copyTo(result.trimap, ground);
     result.solve.setTo(255, (ground_trimap == 128) & ground);
   }

@@ -3,7 +3,8 @@
 // follows from colour: the fraction of the way from the sky colour to the local leaf colour.
 // Below it the ground is textured and may look like bark or leaves, so GrabCut, seeded with the
 // tree above the horizon and the trunk columns, decides trunk versus ground (a hard mask whose
-// edges become the unknown band).
+// edges become the unknown band; inside it, pixels coloured like the photo's own ground are
+// unknown too: GrabCut closes the gaps of a sparse crown).
 #pragma once
 
 #include <opencv2/core.hpp>

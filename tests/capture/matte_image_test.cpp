@@ -80,15 +80,23 @@ TEST(MatteImage, SameResultTwice) {
   EXPECT_EQ(a.foreground, b.foreground);
 }
 
+// Check() fails on `options` with a message that names `field`.
+void ExpectCheckNames(const MatteOptions& options, const std::string& field) {
+  try {
+    options.Check();
+    ADD_FAILURE() << "expected an Error naming " << field;
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find(field), std::string::npos) << error.what();
+  }
+}
+
 TEST(MatteOptions, CheckNamesTheField) {
   MatteOptions options;
   options.horizon = 1.5;
-  try {
-    options.Check();
-    FAIL() << "expected an Error";
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("horizon"), std::string::npos);
-  }
+  ExpectCheckNames(options, "horizon");
+  options = MatteOptions{};
+  options.gap_distance = 0.0;
+  ExpectCheckNames(options, "gap_distance");
   EXPECT_THROW(ParseRefineMethod("magic"), Error);
   EXPECT_EQ(ParseRefineMethod("infoflow"), RefineMethod::kInfoFlow);
 }
