@@ -27,6 +27,8 @@ void HullRematteOptions::Check() const {
   if (guard_passes < 0 || guard_passes > 10) Fail("guard passes must be 0..10, got ", guard_passes);
   if (!(confident_alpha > 0 && confident_alpha <= 1)) Fail("confident alpha must be in (0, 1], got ", confident_alpha);
   if (!(majority_share > 0 && majority_share < 1)) Fail("majority share must be in (0, 1), got ", majority_share);
+  if (narrow_radius_bands < 1 || narrow_radius_bands > 64)
+    FailOption("HullRematteOptions.narrow_radius_bands", "must be in [1, 64], got ", narrow_radius_bands);
   if (use_backdrop) backdrop.Check();
 }
 
@@ -37,7 +39,29 @@ cv::Mat Disc(int radius) {
 }
 
 // How far beyond the hull's projection a photo is still matted (the hull is coarse).
-int HullBand(const Image8& photo) { return std::max(2, std::min(photo.width, photo.height) / 128); }
+int HullBand(int width, int height) { return std::max(2, std::min(width, height) / 128); }
+int HullBand(const Image8& photo) { return HullBand(photo.width, photo.height); }
+
+// Where the hull is narrow (the trunk, a bough: the silhouettes of a column agree closely) it
+// bounds the tree tightly, so what the old matte left out there it missed; it is not a gap of the
+// crown. The eye-level photos' first mattes cut the aspen's thin grey trunk off against the grey
+// soil, and the solver, seeded only by the crown far above, kept it cut off. GrabCut, told the
+// old matte's confident tree and the photo's background outside the hull, decides those parts.
+// CV_8U, 255 where it finds the tree there.
+cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alpha, const cv::Mat& inside,
+                                     const cv::Mat& grown, const cv::Mat& trimap, const Image8* backdrop,
+                                     const HullRematteOptions& options) {
+  cv::Mat wide;
+  cv::morphologyEx(inside, wide, cv::MORPH_OPEN, Disc(options.narrow_radius_bands * HullBand(rgb.cols, rgb.rows)));
+  const cv::Mat missed = (inside != 0) & (wide == 0) & (old_alpha < 128);
+  if (cv::countNonZero(missed) == 0) return missed;
+  cv::Mat labels(rgb.size(), CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
+  labels.setTo(cv::GC_PR_FGD, inside != 0);
+  labels.setTo(cv::GC_FGD, trimap == 255);
+  labels.setTo(cv::GC_BGD, grown == 0);
+  if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
+  return matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & missed;
+}
 
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
 Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image8& hull, const Image8* backdrop,
@@ -73,6 +97,11 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
     trimap.setTo(0, near == 0);
     trimap.setTo(255, sure != 0);
     tree.convertTo(estimate, CV_32F, 1.0 / 255.0);
+  }
+  if (!seedless && options.seed_narrow_parts) {
+    const cv::Mat tree = NarrowPartsTheOldMatteMissed(rgb, old_alpha, inside, grown, trimap, backdrop, options);
+    trimap.setTo(255, tree);
+    estimate.setTo(1.0f, tree);
   }
   if (backdrop != nullptr) {
     const cv::Mat background = matte::View(*backdrop) != 0;

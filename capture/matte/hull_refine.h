@@ -10,7 +10,9 @@
 //      bushes, other trees), well inside it the old matte's confident tree stays tree, the rest
 //      is unknown and solved from the photo's colours (alphamat::infoFlow by default). An old
 //      matte with no tree to seed it (the skyline taken for the tree, the tree against the ground
-//      missed) is seeded by GrabCut inside the hull against the photo's background outside it.
+//      missed) is seeded by GrabCut inside the hull against the photo's background outside it,
+//      and so is what the old matte left out of a narrow part of the hull (a trunk cut off
+//      against the ground).
 //      Near the hull, what two neighbours show at one depth behind it is then taken out
 //      (backdrop.h).
 //   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
@@ -42,7 +44,11 @@ struct HullRematteOptions {
   double majority_share = 0.45;        // that hull: a voxel at most this share of its photos call empty
   double confident_alpha = 0.95;       // the old matte's tree kept as known foreground
   int guard_passes = 3;                // re-matting of the photos the guard would name, at most
-  MatteOptions matte;                  // how the unknown is solved
+  // Narrow parts of the hull (thinner than a disc of this many hull bands in radius) that the old
+  // matte left out are decided by GrabCut: a trunk the old matte cut off against the ground.
+  bool seed_narrow_parts = true;
+  int narrow_radius_bands = 6;
+  MatteOptions matte;  // how the unknown is solved
   // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
   // background when a photo is matted again.
   bool use_backdrop = true;

@@ -49,6 +49,11 @@ class HullRematte : public ::testing::Test {
     return matte;
   }
 
+  static bool LeafGreen(const Image8& photo, int x, int y) {
+    const int r = photo.at(x, y, 0), g = photo.at(x, y, 1), b = photo.at(x, y, 2);
+    return g > r + 8 && g > b + 8;
+  }
+
   static inline fs::path dir_;
   static inline std::vector<View> views_;
   static inline std::vector<Image8> photos_, truth_;
@@ -85,6 +90,66 @@ TEST_F(HullRematte, FindsTheTreeWhereTheFirstMatteMissedItEntirely) {
   EXPECT_LT(mean, 0.015);
   EXPECT_LT(worst, 0.02);
   EXPECT_GT(recall, 0.9);
+}
+
+// The aspen's eye-level photos: a grey trunk against grey soil, and first mattes that took the
+// skyline for the tree (so the photo is not trusted) and found the leaves but no bark, so nothing
+// of the trunk's colour seeds the solver. Here the bark of every photo is painted that grey, and
+// the photos' first mattes keep only the leaves. The trunk's recall below the crown (the lowest
+// third of the tree), with and without the narrow parts of the hull seeded by GrabCut.
+// Measured: 0.804 with, 0.477 without.
+TEST_F(HullRematte, FindsTheTrunkTheFirstMatteCutOff) {
+  std::vector<int> trunk_row(views_.size(), 0);
+  std::vector<Image8> first, photos = photos_;
+  for (size_t i = 0; i < views_.size(); ++i) {
+    Image8 matte = truth_[i];
+    for (int y = 0; y < matte.height; ++y)
+      for (int x = 0; x < matte.width; ++x)
+        if (matte.at(x, y) > 127 && !LeafGreen(photos[i], x, y))
+          for (int c = 0; c < 3; ++c) photos[i].at(x, y, c) = uint8_t(c == 2 ? 150 : 140);
+    if (Missed(i)) {
+      int top = matte.height, bottom = 0;
+      for (int y = 0; y < matte.height; ++y)
+        for (int x = 0; x < matte.width; ++x)
+          if (matte.at(x, y) > 127) top = std::min(top, y), bottom = std::max(bottom, y);
+      trunk_row[i] = bottom - (bottom - top) / 3;
+      for (int y = 0; y < matte.height; ++y)
+        for (int x = 0; x < matte.width; ++x)
+          matte.at(x, y) = y < matte.height / 8 ? 255 : LeafGreen(photos[i], x, y) ? matte.at(x, y) : 0;
+    }
+    first.push_back(std::move(matte));
+  }
+  auto trunk_recall = [&](bool seed_narrow_parts) {
+    HullRematteOptions options;
+    options.seed_narrow_parts = seed_narrow_parts;
+    std::vector<Image8> mattes = first;
+    RematteFromHull(views_, photos, mattes, options);
+    double trunk = 0, found = 0;
+    for (size_t i = 0; i < views_.size(); ++i)
+      for (int y = Missed(i) ? trunk_row[i] : truth_[i].height; y < truth_[i].height; ++y)
+        for (int x = 0; x < truth_[i].width; ++x)
+          if (truth_[i].at(x, y) > 127) {
+            ++trunk;
+            found += mattes[i].at(x, y) > 127;
+          }
+    return found / std::max(trunk, 1.0);
+  };
+  const double with = trunk_recall(true), without = trunk_recall(false);
+  std::printf("trunk below the cut: recall %.3f with the narrow parts seeded, %.3f without\n", with, without);
+  EXPECT_GT(with, 0.7);
+  EXPECT_GT(with, without + 0.2);
+}
+
+TEST(HullRematteOptions, CheckNamesTheNarrowPartsField) {
+  HullRematteOptions options;
+  options.narrow_radius_bands = 0;
+  try {
+    options.Check();
+    FAIL() << "a zero narrow radius was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("HullRematteOptions.narrow_radius_bands"), std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace
