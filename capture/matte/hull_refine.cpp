@@ -42,6 +42,17 @@ cv::Mat Disc(int radius) {
 int HullBand(int width, int height) { return std::max(2, std::min(width, height) / 128); }
 int HullBand(const Image8& photo) { return HullBand(photo.width, photo.height); }
 
+// GrabCut's labels for a photo matted inside the hull's projection: probably tree inside it,
+// certain background outside it grown by a band and where the backdrop explains the pixel,
+// probably background in between.
+cv::Mat HullGrabCutLabels(const cv::Mat& inside, const cv::Mat& grown, const Image8* backdrop) {
+  cv::Mat labels(inside.size(), CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
+  labels.setTo(cv::GC_PR_FGD, inside != 0);
+  labels.setTo(cv::GC_BGD, grown == 0);
+  if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
+  return labels;
+}
+
 // Where the hull is narrow (the trunk, a bough: the silhouettes of a column agree closely) it
 // bounds the tree tightly, so what the old matte left out there it missed; it is not a gap of the
 // crown. The eye-level photos' first mattes cut the aspen's thin grey trunk off against the grey
@@ -55,11 +66,8 @@ cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alph
   cv::morphologyEx(inside, wide, cv::MORPH_OPEN, Disc(options.narrow_radius_bands * HullBand(rgb.cols, rgb.rows)));
   const cv::Mat missed = (inside != 0) & (wide == 0) & (old_alpha < 128);
   if (cv::countNonZero(missed) == 0) return missed;
-  cv::Mat labels(rgb.size(), CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
-  labels.setTo(cv::GC_PR_FGD, inside != 0);
-  labels.setTo(cv::GC_FGD, trimap == 255);
-  labels.setTo(cv::GC_BGD, grown == 0);
-  if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
+  cv::Mat labels = HullGrabCutLabels(inside, grown, backdrop);
+  labels.setTo(cv::GC_FGD, (trimap == 255) & (labels != cv::GC_BGD));
   return matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & missed;
 }
 
@@ -85,10 +93,7 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
   // and its edges become the unknown band.
   const bool seedless = cv::countNonZero(trimap == 255) < 0.1 * cv::countNonZero(inside);
   if (seedless) {
-    cv::Mat labels(photo.height, photo.width, CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
-    labels.setTo(cv::GC_PR_FGD, inside != 0);
-    labels.setTo(cv::GC_BGD, grown == 0);
-    if (backdrop != nullptr) labels.setTo(cv::GC_BGD, matte::View(*backdrop) != 0);
+    const cv::Mat labels = HullGrabCutLabels(inside, grown, backdrop);
     const cv::Mat tree = matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & (grown != 0);
     const int radius = options.matte.BandRadius(photo.width, photo.height);
     cv::Mat sure, near;
