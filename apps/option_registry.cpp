@@ -138,6 +138,10 @@ std::vector<OptionSpec> ReconstructFlags() {
       {"--carve-alpha",
        {"ReconstructOptions.carve_alpha"},
        "Alpha at or below which a pixel is empty for visual-hull carving"},
+      {"--carve-views",
+       {"OpacityOptions.carve_views"},
+       "Carve a cell when this many photos each see it empty (1: the strict visual hull; 2 survives one "
+       "wrong matte, such as a thin trunk cut off in one photo, but blurs a dense crown's edge)"},
       {"--solver",
        {"OpacityOptions.solver"},
        "Opacity solver: sart (streamed SART) or ceres (bounded least squares, small volumes only)"},

@@ -101,6 +101,7 @@ void AddReconstructOptions(CLI::App& command, ReconstructOptions& reconstruct) {
   AddOption(command, "--margin", reconstruct.margin);
   AddOption(command, "--carve-alpha", reconstruct.carve_alpha);
   OpacityOptions& opacity = reconstruct.opacity;
+  AddOption(command, "--carve-views", opacity.carve_views);
   AddChoice(command, "--solver", opacity.solver, {{"sart", SolverKind::kSart}, {"ceres", SolverKind::kCeres}});
   AddOption(command, "--iterations", opacity.sart.iterations);
   AddOption(command, "--relaxation", opacity.sart.relaxation);

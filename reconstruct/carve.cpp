@@ -26,19 +26,21 @@ bool ProjectBox(const View& view, const Eigen::Vector3d& lo, const Eigen::Vector
 }
 
 std::vector<CellCoord> CarveCells(const GridFrame& frame, int level, const std::vector<CellCoord>& candidates,
-                                  const std::vector<View>& views, const std::vector<MatteStats>& mattes) {
+                                  const std::vector<View>& views, const std::vector<MatteStats>& mattes,
+                                  int empty_views) {
   const double size = frame.CellSize(level);
   std::vector<uint8_t> keep(candidates.size(), 1);
   tbb::parallel_for(size_t(0), candidates.size(), [&](size_t i) {
     const Eigen::Vector3d lo = frame.CellMin(level, candidates[i]);
     const Eigen::Vector3d hi = lo + Eigen::Vector3d::Constant(size);
+    int empty = 0;
     for (size_t v = 0; v < views.size(); ++v) {
       double x0, y0, x1, y1;
       if (!ProjectBox(views[v], lo, hi, &x0, &y0, &x1, &y1)) continue;
       const PixelBox box = CoveredPixels(x0, y0, x1, y1);
       const MatteStats& m = mattes[v];
       if (box.x0 < 0 || box.y0 < 0 || box.x1 > m.width() || box.y1 > m.height()) continue;
-      if (m.Occupied(box) == 0) {
+      if (m.Occupied(box) == 0 && ++empty >= empty_views) {
         keep[i] = 0;
         return;
       }

@@ -12,9 +12,11 @@
 
 namespace voltree {
 
-// The candidates (sorted) that survive carving, in the same order.
+// The candidates (sorted) that survive carving, in the same order: a cell is removed when at
+// least `empty_views` views see all of it empty.
 std::vector<CellCoord> CarveCells(const GridFrame& frame, int level, const std::vector<CellCoord>& candidates,
-                                  const std::vector<View>& views, const std::vector<MatteStats>& mattes);
+                                  const std::vector<View>& views, const std::vector<MatteStats>& mattes,
+                                  int empty_views = 1);
 
 // The pixels a world-space box projects to (bounding rectangle of its 8 corners); false when a
 // corner is behind the camera.

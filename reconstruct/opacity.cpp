@@ -49,7 +49,7 @@ OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& v
   for (int level = 0; level < levels && !candidates.empty(); ++level) {
     OpacityLevelReport report;
     report.candidates = candidates.size();
-    std::vector<CellCoord> kept = CarveCells(frame, level, candidates, views, mattes);
+    std::vector<CellCoord> kept = CarveCells(frame, level, candidates, views, mattes, options.carve_views);
     report.kept = kept.size();
     if (kept.empty()) {
       if (level == 0)
@@ -116,6 +116,7 @@ void OpacityOptions::Check() const {
     FailOption("OpacityOptions.solver", "is not a known solver (", int(solver), ")");
   if (!(refine_min_optical_depth >= 0))
     FailOption("OpacityOptions.refine_min_optical_depth", "must be >= 0, got ", refine_min_optical_depth);
+  if (carve_views < 1) FailOption("OpacityOptions.carve_views", "must be >= 1, got ", carve_views);
   tomography.Check();
   sart.Check();
   ceres.Check();

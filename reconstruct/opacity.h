@@ -28,6 +28,10 @@ struct OpacityOptions {
   // A cell is refined when sigma * cell edge (its optical depth) reaches this; below it the cell
   // is practically transparent (alpha < 0.2 %).
   double refine_min_optical_depth = 0;  // 0: refine every cell the visual hull keeps
+  // A cell is carved when this many views each see all of it empty. 1 is the strict visual hull;
+  // 2 lets one wrong matte (a trunk cut off against soil of its colour) leave the tree standing,
+  // but keeps cells that only one view could carve, which blurs a dense crown's edge.
+  int carve_views = 1;
 
   void Check() const;  // throws OptionError naming the field
 };

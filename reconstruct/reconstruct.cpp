@@ -77,6 +77,7 @@ nlohmann::json ReconstructOptions::ToJson() const {
           {"huber", opacity.ceres.huber},
           {"margin", margin},
           {"carve_alpha", carve_alpha},
+          {"carve_views", opacity.carve_views},
           {"refine_min_optical_depth", opacity.refine_min_optical_depth},
           {"samples_per_cell", opacity.tomography.samples_per_cell},
           {"epsilon", opacity.tomography.epsilon},
