@@ -10,20 +10,12 @@
 namespace voltree {
 namespace {
 
-std::vector<CellCoord> EveryCellOfAnEightCube() {
-  std::vector<CellCoord> all;
-  for (int z = 0; z < 8; ++z)
-    for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 8; ++x) all.push_back({uint16_t(x), uint16_t(y), uint16_t(z)});
-  return all;
-}
-
 TEST(CarveCells, TwoEmptyViewsSurviveOneWrongMatte) {
   const testing::Phantom phantom = testing::BlobPhantom(8);
   ReconstructInput input = testing::PhantomInput(phantom, 12, 48);
   const GridFrame frame{Eigen::Vector3d::Zero(), 1.0, 2};
   const int level = 3;  // 8^3
-  const std::vector<CellCoord> all = EveryCellOfAnEightCube();
+  const std::vector<CellCoord> all = testing::EveryCell(8);
   auto carve = [&](int empty_views) {
     std::vector<MatteStats> mattes;
     for (const Image8& m : input.mattes) mattes.emplace_back(m, 5);

@@ -18,10 +18,7 @@ TEST(SartCeres, AgreeOnASmallLevel) {
   for (const Image8& m : input.mattes) mattes.emplace_back(m, 5);
   const GridFrame frame{Eigen::Vector3d::Zero(), 1.0, 2};
   const int level = 3;  // 8^3
-  std::vector<CellCoord> all;
-  for (int z = 0; z < 8; ++z)
-    for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 8; ++x) all.push_back({uint16_t(x), uint16_t(y), uint16_t(z)});
+  const std::vector<CellCoord> all = testing::EveryCell(8);
   const LevelCells cells(8, CarveCells(frame, level, all, input.views, mattes));
   ASSERT_GT(cells.size(), 20u);
   const TomographySystem system(frame, level, cells, input.views, mattes, TomographyOptions{});
@@ -50,10 +47,7 @@ TEST(SartCeres, StreamedAndStoredSystemsGiveTheSameBits) {
   std::vector<MatteStats> mattes;
   for (const Image8& m : input.mattes) mattes.emplace_back(m, 5);
   const GridFrame frame{Eigen::Vector3d::Zero(), 1.0, 2};
-  std::vector<CellCoord> all;
-  for (int z = 0; z < 8; ++z)
-    for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 8; ++x) all.push_back({uint16_t(x), uint16_t(y), uint16_t(z)});
+  const std::vector<CellCoord> all = testing::EveryCell(8);
   const LevelCells cells(8, all);
   TomographyOptions streamed_options;
   streamed_options.max_stored_bytes = 1000;

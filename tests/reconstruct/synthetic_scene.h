@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "reconstruct/dda.h"
+#include "reconstruct/grid.h"
 #include "reconstruct/reconstruct.h"
 
 namespace voltree::testing {
@@ -109,6 +110,15 @@ inline ReconstructInput PhantomInput(const Phantom& p, int views, int size) {
   input.bounds_max = Eigen::Vector3d::Ones();
   input.source = "phantom";
   return input;
+}
+
+// Every cell of a resolution^3 grid, sorted by CellLess (z, then y, then x).
+inline std::vector<CellCoord> EveryCell(int resolution) {
+  std::vector<CellCoord> all;
+  for (int z = 0; z < resolution; ++z)
+    for (int y = 0; y < resolution; ++y)
+      for (int x = 0; x < resolution; ++x) all.push_back({uint16_t(x), uint16_t(y), uint16_t(z)});
+  return all;
 }
 
 }  // namespace voltree::testing
