@@ -10,6 +10,7 @@
 #include "capture/matte/foreground.h"
 #include "capture/matte/grabcut.h"
 #include "capture/matte/refine.h"
+#include "capture/matte/sky_estimate.h"
 #include "capture/matte/workspace.h"
 #include "core/error.h"
 
@@ -71,6 +72,15 @@ cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alph
   return matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & missed;
 }
 
+// The sky the photo's own colour model explains. Parallax cannot tell it behind the crown: with
+// a narrow lens the neighbours of the eye-level ring do not see that sky at all.
+cv::Mat ClearSkyOf(const cv::Mat& rgb, const MatteOptions& options) {
+  cv::Mat lab;
+  rgb.convertTo(lab, CV_32F, 1.0 / 255.0);
+  cv::cvtColor(lab, lab, cv::COLOR_RGB2Lab);
+  return matte::EstimateSky(lab, options).ClearSky();
+}
+
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
 Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image8& hull, const Image8* backdrop,
                        const HullRematteOptions& options) {
@@ -112,6 +122,11 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
     const cv::Mat background = matte::View(*backdrop) != 0;
     trimap.setTo(0, background);
     estimate.setTo(0.0f, background);
+  }
+  if (options.keep_clear_sky) {
+    const cv::Mat sky = ClearSkyOf(rgb, options.matte);
+    trimap.setTo(0, sky);
+    estimate.setTo(0.0f, sky);
   }
   estimate.setTo(0.0f, grown == 0);
   const cv::Mat solve = trimap == 128;

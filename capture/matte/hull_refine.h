@@ -13,8 +13,9 @@
 //      missed) is seeded by GrabCut inside the hull against the photo's background outside it,
 //      and so is what the old matte left out of a narrow part of the hull (a trunk cut off
 //      against the ground).
-//      Near the hull, what two neighbours show at one depth behind it is then taken out
-//      (backdrop.h).
+//      The sky the photo's own colour model explains stays background (parallax cannot tell
+//      it behind the crown: the eye-level ring's neighbours do not see that sky). Near the hull,
+//      what two neighbours show at one depth behind it is then taken out (backdrop.h).
 //   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
 //      matted again the same way inside the hull of those it passes.
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
@@ -48,6 +49,10 @@ struct HullRematteOptions {
   // matte left out are decided by GrabCut: a trunk the old matte cut off against the ground.
   bool seed_narrow_parts = true;
   int narrow_radius_bands = 6;
+  // The sky this photo's colour model explains stays background when it is matted again (the
+  // first matte's colour alpha said so; the solver, seeded by the hull alone, blurred the crown's
+  // gaps against the sky into it).
+  bool keep_clear_sky = true;
   MatteOptions matte;  // how the unknown is solved
   // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
   // background when a photo is matted again.

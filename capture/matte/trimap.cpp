@@ -8,28 +8,11 @@
 
 #include "capture/matte/fill.h"
 #include "capture/matte/grabcut.h"
-#include "capture/matte/sky.h"
+#include "capture/matte/sky_estimate.h"
 
 namespace voltree::matte {
 
 namespace {
-
-cv::Mat RowsAbove(int rows, int cols, int horizon) {
-  cv::Mat mask = cv::Mat::zeros(rows, cols, CV_8U);
-  if (horizon > 0) mask.rowRange(0, std::min(horizon, rows)).setTo(255);
-  return mask;
-}
-
-// Bright, nearly grey pixels: clouds and overcast sky that the smooth model cannot follow.
-cv::Mat CloudMask(const cv::Mat& lab) {
-  cv::Mat mask(lab.size(), CV_8U);
-  for (int y = 0; y < lab.rows; ++y)
-    for (int x = 0; x < lab.cols; ++x) {
-      const cv::Vec3f p = lab.at<cv::Vec3f>(y, x);
-      mask.at<uint8_t>(y, x) = p[0] > 82.0f && std::hypot(p[1], p[2]) < 10.0f ? 255 : 0;
-    }
-  return mask;
-}
 
 cv::Mat Weight(const cv::Mat& mask8) {
   cv::Mat weight;
@@ -177,17 +160,6 @@ cv::Mat CutFromGround(const cv::Mat& rgb, const MatteOptions& options) {
 
 }  // namespace
 
-int EstimateHorizonRow(const cv::Mat& sky_mask, double min_fraction) {
-  // Relative to the sky-richest row as well: hazy distant ground just above the horizon matches
-  // the sky in a few pixels per row, the sky rows (even behind the crown) in many.
-  int richest = 0;
-  for (int y = 0; y < sky_mask.rows; ++y) richest = std::max(richest, cv::countNonZero(sky_mask.row(y)));
-  const int needed = std::max({1, int(std::ceil(min_fraction * sky_mask.cols)), richest / 5});
-  for (int y = sky_mask.rows - 1; y >= 0; --y)
-    if (cv::countNonZero(sky_mask.row(y)) >= needed) return y + 1;
-  return 0;
-}
-
 cv::Mat LowContrast(const cv::Mat& background, const cv::Mat& foreground, float min_contrast) {
   cv::Mat difference = foreground - background, squared, contrast;
   cv::transform(difference.mul(difference), squared, cv::Matx13f(1, 1, 1));
@@ -216,36 +188,17 @@ Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options) {
   rgb.convertTo(rgbf, CV_32F, 1.0 / 255.0);
   cv::cvtColor(rgbf, lab, cv::COLOR_RGB2Lab);
 
-  // Sky model: seeded by the top rows, then refitted to all the sky above the horizon.
-  const int seed_rows = std::clamp(int(std::lround(options.sky_seed_rows * rows)), 1, rows);
-  SkyModel sky = FitSkyModel(lab, RowsAbove(rows, cols, seed_rows));
-  // Sky is smooth; textured ground in the top rows (a camera looking down) is not.
-  if (sky.valid() && sky.sigma > options.max_sky_sigma && options.horizon < 0) sky = SkyModel{};
-  const cv::Mat clouds = options.clouds ? CloudMask(lab) : cv::Mat::zeros(rgb.size(), CV_8U);
-  auto sky_mask = [&](const SkyModel& model) -> cv::Mat {
-    if (!model.valid()) return clouds.clone();
-    const double tolerance = std::max(options.sky_tolerance, 3.0 * model.sigma);
-    cv::Mat mask = SkyDistance(lab, model) < tolerance;
-    return mask | clouds;
-  };
-  cv::Mat sky_pixels = sky_mask(sky);
-  int horizon = options.horizon >= 0 ? int(std::lround(options.horizon * rows))
-                : sky.valid()        ? EstimateHorizonRow(sky_pixels)
-                                     : 0;
-  for (int round = 0; round < 2 && horizon > 0; ++round) {
-    const SkyModel refit = FitSkyModel(lab, sky_pixels & ~clouds & RowsAbove(rows, cols, horizon));
-    if (!refit.valid()) break;
-    sky = refit;
-    sky_pixels = sky_mask(sky);
-    if (options.horizon < 0) horizon = EstimateHorizonRow(sky_pixels);
-  }
+  const SkyEstimate estimate = EstimateSky(lab, options);
+  const SkyModel& sky = estimate.model;
+  const cv::Mat& clouds = estimate.clouds;
+  const cv::Mat& sky_pixels = estimate.pixels;
+  int horizon = estimate.horizon;
 
   Segmentation result;
   result.horizon_row = horizon;
-  // The rows just above the horizon mix sky and ground (blur, JPEG, antialiasing): the colour
-  // alpha would call them tree, so they go with the ground, to GrabCut.
-  const int margin = std::max(4, rows / 100);
-  if (horizon < rows) horizon = horizon > margin ? horizon - margin : 0;
+  // The rows just above the horizon mix sky and ground: the colour alpha would call them tree, so
+  // they go with the ground, to GrabCut.
+  horizon = estimate.MixedRowsStart();
   result.sky_sigma = sky.sigma;
   result.alpha = cv::Mat::zeros(rgb.size(), CV_32F);
   cv::Mat low_contrast = cv::Mat::zeros(rgb.size(), CV_8U);
@@ -258,7 +211,7 @@ Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options) {
     // Leaf colour near each pixel, from the purest tree pixels around: those nearly as far from
     // the sky as the farthest one within the search radius (mixed edge pixels would bias it
     // towards the sky and push alpha to 1).
-    const double tolerance = std::max(options.sky_tolerance, 3.0 * sky.sigma);
+    const double tolerance = estimate.Tolerance(options);
     cv::Mat distance = SkyDistance(lab, sky);
     distance.setTo(0.0f, clouds | ~above);
     const int search = std::max(2, int(std::lround(options.leaf_search * std::min(rows, cols))));

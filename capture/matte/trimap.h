@@ -27,11 +27,6 @@ struct Segmentation {
 // `rgb`: CV_8UC3 RGB photo.
 Segmentation SegmentTree(const cv::Mat& rgb, const MatteOptions& options);
 
-// The horizon from a sky mask: the row after the last one that still shows sky across at least
-// `min_fraction` of its width and a fifth of the sky-richest row (the ground shows none or a few
-// stray pixels). 0 when no row shows sky.
-int EstimateHorizonRow(const cv::Mat& sky_mask, double min_fraction = 0.03);
-
 // Fraction of the way from `background` to `foreground` along their difference (both CV_32FC3),
 // clamped to [0, 1]; where the two are closer than `min_contrast`, `fallback` (CV_32F) is used.
 // CV_8U mask where `background` and `foreground` (CV_32FC3) are closer than `min_contrast`.

@@ -21,40 +21,56 @@ namespace voltree {
 namespace {
 namespace fs = std::filesystem;
 
+// The studio's photos of a young oak (16 photos, no held-out views, at 192²; about a second) and
+// their true mattes, with `extra` on synth's command line.
+struct YoungOakPhotos {
+  std::vector<View> views;
+  std::vector<Image8> photos, truth;
+};
+YoungOakPhotos PhotographYoungOak(const std::string& extra) {
+  const fs::path dir = fs::path(::testing::TempDir()) / Str("voltree_hull_rematte_", ::getpid());
+  fs::remove_all(dir);
+  YoungOakPhotos set;
+  if (test::Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --quiet " + extra + " -o " +
+                    dir.string()) != 0)
+    return set;
+  set.views = ReadColmapModel(dir / "sparse").Views();
+  for (const View& view : set.views) {
+    set.photos.push_back(ReadImage8(dir / "images" / view.name, 3));
+    set.truth.push_back(ReadImage8(dir / "mattes" / (fs::path(view.name).stem().string() + ".png"), 1));
+  }
+  fs::remove_all(dir);
+  return set;
+}
+
+// Every other photo of the lower ring (the studio names that ring's photos first).
+bool EveryOtherLowerRingPhoto(size_t i, size_t count) { return i < count / 2 && i % 2 == 1; }
+
+// The skyline band across the top eighth of the photo, and nothing of the tree.
+Image8 SkylineOnly(const Image8& truth) {
+  Image8 matte(truth.width, truth.height, 1);
+  for (int y = 0; y < truth.height / 8; ++y)
+    for (int x = 0; x < truth.width; ++x) matte.at(x, y) = 255;
+  return matte;
+}
+
 class HullRematte : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::path(::testing::TempDir()) / Str("voltree_hull_rematte_", ::getpid());
-    fs::remove_all(dir_);
-    // 16 photos in two rings (20 and 35 degrees) at 192²; about a second.
-    ASSERT_EQ(test::Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --min-elevation 20 --quiet -o " +
-                            dir_.string()),
-              0);
-    views_ = ReadColmapModel(dir_ / "sparse").Views();
-    for (const View& view : views_) {
-      photos_.push_back(ReadImage8(dir_ / "images" / view.name, 3));
-      truth_.push_back(ReadImage8(dir_ / "mattes" / (fs::path(view.name).stem().string() + ".png"), 1));
-    }
+    YoungOakPhotos set = PhotographYoungOak("--min-elevation 20");  // two rings, at 20 and 35 degrees
+    ASSERT_FALSE(set.views.empty());
+    views_ = std::move(set.views);
+    photos_ = std::move(set.photos);
+    truth_ = std::move(set.truth);
   }
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  // Every other photo of the lower ring (the studio names that ring's photos first).
-  static bool Missed(size_t i) { return i < views_.size() / 2 && i % 2 == 1; }
-
-  // The skyline band across the top eighth of the photo, and nothing of the tree.
-  static Image8 SkylineOnly(const Image8& truth) {
-    Image8 matte(truth.width, truth.height, 1);
-    for (int y = 0; y < truth.height / 8; ++y)
-      for (int x = 0; x < truth.width; ++x) matte.at(x, y) = 255;
-    return matte;
-  }
+  static bool Missed(size_t i) { return EveryOtherLowerRingPhoto(i, views_.size()); }
 
   static bool LeafGreen(const Image8& photo, int x, int y) {
     const int r = photo.at(x, y, 0), g = photo.at(x, y, 1), b = photo.at(x, y, 2);
     return g > r + 8 && g > b + 8;
   }
 
-  static inline fs::path dir_;
   static inline std::vector<View> views_;
   static inline std::vector<Image8> photos_, truth_;
 };
@@ -138,6 +154,43 @@ TEST_F(HullRematte, FindsTheTrunkTheFirstMatteCutOff) {
   std::printf("trunk below the cut: recall %.3f with the narrow parts seeded, %.3f without\n", with, without);
   EXPECT_GT(with, 0.7);
   EXPECT_GT(with, without + 0.2);
+}
+
+// The eye-level ring of the default rings sees sky behind the upper crown (the plain backdrop:
+// nothing but sky there). Its photos, not trusted (their first mattes hold a skyline band
+// alone), are matted again inside the hull; the sky the photo's own colour model explains stays
+// background there, where the solver alone blurred the crown's gaps into it. The alpha
+// re-matting puts on the truth's background in the photos' upper half, in fully opaque pixels'
+// worth per re-matted photo at 192². Measured: 165 kept clear, 213 solved (the realistic
+// backdrop, with hills and trees behind much of the crown: 282 and 289).
+TEST(HullRematteSky, KeepsTheClearSkyInTheCrownsGapsBackground) {
+  const YoungOakPhotos set = PhotographYoungOak("--backdrop plain");  // rings at 5 and 35 degrees
+  ASSERT_FALSE(set.views.empty());
+  const std::vector<View>& views = set.views;
+  const std::vector<Image8>& truth = set.truth;
+  const auto untrusted = [&](size_t i) { return EveryOtherLowerRingPhoto(i, views.size()); };
+  std::vector<Image8> first;
+  for (size_t i = 0; i < views.size(); ++i) first.push_back(untrusted(i) ? SkylineOnly(truth[i]) : truth[i]);
+  auto false_alpha_in_the_sky = [&](bool keep_clear_sky) {
+    HullRematteOptions options;
+    options.keep_clear_sky = keep_clear_sky;
+    std::vector<Image8> mattes = first;
+    RematteFromHull(views, set.photos, mattes, options);
+    double sum = 0;
+    int photos_counted = 0;
+    for (size_t i = 0; i < views.size(); ++i) {
+      if (!untrusted(i)) continue;
+      ++photos_counted;
+      // The upper half of the photo: the crown, with the sky behind it at this ring.
+      for (int y = 0; y < truth[i].height / 2; ++y)
+        for (int x = 0; x < truth[i].width; ++x)
+          if (truth[i].at(x, y) == 0) sum += mattes[i].at(x, y) / 255.0;
+    }
+    return sum / std::max(photos_counted, 1);
+  };
+  const double with = false_alpha_in_the_sky(true), without = false_alpha_in_the_sky(false);
+  std::printf("alpha on the sky behind the crown, per re-matted photo: %.1f kept clear, %.1f solved\n", with, without);
+  EXPECT_LT(with, 0.85 * without);
 }
 
 TEST(HullRematteOptions, CheckNamesTheNarrowPartsField) {
