@@ -11,10 +11,10 @@
 namespace voltree::matte {
 
 struct SkyEstimate {
-  SkyModel model;    // invalid when the top rows show no smooth sky (a camera looking down)
-  cv::Mat pixels;    // CV_8U, 255 where the model or the cloud test explains the pixel
-  cv::Mat clouds;    // CV_8U, 255 on bright, nearly grey pixels (part of `pixels`)
-  int horizon = 0;   // first ground row; == rows when there is no ground
+  SkyModel model;   // invalid when the top rows show no smooth sky (a camera looking down)
+  cv::Mat pixels;   // CV_8U, 255 where the model or the cloud test explains the pixel
+  cv::Mat clouds;   // CV_8U, 255 on bright, nearly grey pixels (part of `pixels`)
+  int horizon = 0;  // first ground row; == rows when there is no ground
   double Tolerance(const MatteOptions& options) const;  // Lab distance still called sky
   // The rows just above the horizon mix sky and ground (blur, JPEG, antialiasing): the first row
   // of those, below which the colour model does not speak.
