@@ -9,6 +9,7 @@
 #include "capture/matte/cv.h"
 #include "capture/matte/foreground.h"
 #include "capture/matte/grabcut.h"
+#include "capture/matte/mixed_pixels.h"
 #include "capture/matte/refine.h"
 #include "capture/matte/sky_estimate.h"
 #include "capture/matte/workspace.h"
@@ -31,6 +32,7 @@ void HullRematteOptions::Check() const {
   if (narrow_radius_bands < 1 || narrow_radius_bands > 64)
     FailOption("HullRematteOptions.narrow_radius_bands", "must be in [1, 64], got ", narrow_radius_bands);
   if (use_backdrop) backdrop.Check();
+  if (matte_mixed_pixels) mixed_pixels.Check();
 }
 
 namespace {
@@ -249,6 +251,10 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
       if (std::find(result.rematted.begin(), result.rematted.end(), name) == result.rematted.end())
         result.rematted.push_back(name);
   }
+  if (options.matte_mixed_pixels)
+    tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
+      mattes[i] = MatteMixedPixels(photos[i], mattes[i], options.matte, options.mixed_pixels);
+    });
   for (size_t i = 0; i < views.size(); ++i)
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
   return result;
@@ -275,8 +281,9 @@ HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematt
                    result.rematted.empty() ? std::string("none re-matted")
                                            : Str(result.rematted.size(), " re-matted inside the visual hull ",
                                                  result.majority_hull ? "all photos agree on by majority" : "of those"),
-                   options.use_backdrop ? "; background told by parallax taken out" : "", "; ", result.changed.size(),
-                   " mattes changed"));
+                   options.use_backdrop ? "; background told by parallax taken out" : "",
+                   options.matte_mixed_pixels ? "; pixels a leaf covers in part matted again" : "", "; ",
+                   result.changed.size(), " mattes changed"));
   return result;
 }
 

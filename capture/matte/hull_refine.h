@@ -28,6 +28,7 @@
 
 #include "capture/matte/backdrop.h"
 #include "capture/matte/consistency.h"
+#include "capture/matte/mixed_pixels.h"
 #include "capture/matte/options.h"
 #include "core/camera.h"
 #include "core/image.h"
@@ -53,6 +54,10 @@ struct HullRematteOptions {
   // first matte's colour alpha said so; the solver, seeded by the hull alone, blurred the crown's
   // gaps against the sky into it).
   bool keep_clear_sky = true;
+  // Last, every photo is matted once more where its background is known, so that the pixels a
+  // leaf covers in part are solved instead of whole (mixed_pixels.h).
+  bool matte_mixed_pixels = true;
+  MixedPixelOptions mixed_pixels;
   MatteOptions matte;  // how the unknown is solved
   // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
   // background when a photo is matted again.
