@@ -74,18 +74,19 @@ cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alph
   return matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & missed;
 }
 
-// The sky the photo's own colour model explains. Parallax cannot tell it behind the crown: with
-// a narrow lens the neighbours of the eye-level ring do not see that sky at all.
-cv::Mat ClearSkyOf(const cv::Mat& rgb, const MatteOptions& options) {
-  cv::Mat lab;
-  rgb.convertTo(lab, CV_32F, 1.0 / 255.0);
-  cv::cvtColor(lab, lab, cv::COLOR_RGB2Lab);
-  return matte::EstimateSky(lab, options).ClearSky();
-}
+// What each photo is known to show behind the tree, found once: the background told by parallax
+// (backdrop.h; empty when not used) and the sky the photo's own colour model explains (empty when
+// not kept). Parallax cannot tell that sky behind the crown: with a narrow lens the neighbours of
+// the eye-level ring do not see it at all.
+struct KnownBackground {
+  std::vector<Image8> parallax, clear_sky;
+  const Image8* Parallax(size_t i) const { return parallax.empty() ? nullptr : &parallax[i]; }
+  const Image8* ClearSky(size_t i) const { return clear_sky.empty() ? nullptr : &clear_sky[i]; }
+};
 
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
 Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image8& hull, const Image8* backdrop,
-                       const HullRematteOptions& options) {
+                       const Image8* clear_sky, const HullRematteOptions& options) {
   const cv::Mat rgb = matte::View(photo);
   const cv::Mat old_alpha = matte::View(old_matte);
   const cv::Mat inside = matte::View(hull);
@@ -125,8 +126,8 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
     trimap.setTo(0, background);
     estimate.setTo(0.0f, background);
   }
-  if (options.keep_clear_sky) {
-    const cv::Mat sky = ClearSkyOf(rgb, options.matte);
+  if (clear_sky != nullptr) {
+    const cv::Mat sky = matte::View(*clear_sky) != 0;
     trimap.setTo(0, sky);
     estimate.setTo(0.0f, sky);
   }
@@ -155,7 +156,7 @@ Image8 BehindHullNearIt(const std::vector<View>& views, const std::vector<Image8
 // (none when too few are trusted).
 std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const std::vector<Image8>& photos,
                                           std::vector<Image8>& mattes, const std::vector<bool>& trusted,
-                                          const std::vector<Image8>& backdrops, const HullRematteOptions& options,
+                                          const KnownBackground& known, const HullRematteOptions& options,
                                           bool* majority_hull) {
   std::vector<View> targets;
   std::vector<size_t> target_index;
@@ -177,18 +178,18 @@ std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const 
     *majority_hull = true;
   }
   // The sweep behind the hull looks into the neighbours' hulls too: project it into every photo.
-  const bool sweep = !backdrops.empty() && options.backdrop.behind_neighbours > 0;
+  const bool sweep = !known.parallax.empty() && options.backdrop.behind_neighbours > 0;
   const std::vector<HullProjection> hulls = ProjectHull(views, mattes, carvers, sweep ? views : targets, carving);
   std::vector<Image8> rematted(targets.size());
   tbb::parallel_for(size_t(0), targets.size(), [&](size_t t) {
     const size_t i = target_index[t];
-    rematted[t] = MatteInsideHull(photos[i], mattes[i], hulls[sweep ? i : t].mask,
-                                  backdrops.empty() ? nullptr : &backdrops[i], options);
+    rematted[t] =
+        MatteInsideHull(photos[i], mattes[i], hulls[sweep ? i : t].mask, known.Parallax(i), known.ClearSky(i), options);
     // Taken out afterwards, not handed to the solver as known background: there the grey of the
     // hazy hills claimed the aspen's thin trunk (held-out recall 0.947 -> 0.837).
     if (sweep)
       matte::View(rematted[t])
-          .setTo(0, matte::View(BehindHullNearIt(views, photos, hulls, i, backdrops[i], options.backdrop)) != 0);
+          .setTo(0, matte::View(BehindHullNearIt(views, photos, hulls, i, known.parallax[i], options.backdrop)) != 0);
   });
   std::vector<std::string> names;
   for (size_t t = 0; t < targets.size(); ++t) {
@@ -206,14 +207,16 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   if (views.size() != photos.size() || views.size() != mattes.size())
     Fail("re-matting needs one photo and one matte per view");
   const std::vector<Image8> before = mattes;
-  std::vector<Image8> backdrops;
-  if (options.use_backdrop) {
-    backdrops.resize(views.size());
-    tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
-      backdrops[i] = ExplainedByBackdrop(views, photos, before, i, options.backdrop);
-    });
-    for (size_t i = 0; i < views.size(); ++i) matte::View(mattes[i]).setTo(0, matte::View(backdrops[i]) != 0);
-  }
+  KnownBackground known;
+  if (options.use_backdrop) known.parallax.resize(views.size());
+  if (options.keep_clear_sky) known.clear_sky.resize(views.size());
+  tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
+    if (options.use_backdrop) known.parallax[i] = ExplainedByBackdrop(views, photos, before, i, options.backdrop);
+    if (options.keep_clear_sky)
+      known.clear_sky[i] = matte::ToImage8(matte::EstimatePhotoSky(matte::View(photos[i]), options.matte).ClearSky());
+  });
+  if (options.use_backdrop)
+    for (size_t i = 0; i < views.size(); ++i) matte::View(mattes[i]).setTo(0, matte::View(known.parallax[i]) != 0);
   // Pass 1, trust by majority: few minority votes of either kind. Keeps are relative to the
   // median photo's (every matte keeps some background voxels that happen to project onto the
   // tree). This survives half of the mattes being wrong.
@@ -231,7 +234,7 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
                  double(vote.keeps) <= options.max_keep_ratio * std::max(median_keeps, 1.0);
     if (trusted[i]) result.trusted.push_back(views[i].name);
   }
-  result.rematted = RematteUntrusted(views, photos, mattes, trusted, backdrops, options, &result.majority_hull);
+  result.rematted = RematteUntrusted(views, photos, mattes, trusted, known, options, &result.majority_hull);
   // Then trust by the guard's own test (matte_consistency.h) on the mended set: the photos it
   // would name are matted again inside the hull of those it passes, a few times (each pass starts
   // from the last mattes; measured on the oak at 512²: MSE mean 0.011 -> 0.006 from one more).
@@ -245,7 +248,7 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
     }
     if (all_pass) break;
     const std::vector<std::string> names =
-        RematteUntrusted(views, photos, mattes, trusted, backdrops, options, &result.majority_hull);
+        RematteUntrusted(views, photos, mattes, trusted, known, options, &result.majority_hull);
     if (names.empty()) break;
     for (const std::string& name : names)
       if (std::find(result.rematted.begin(), result.rematted.end(), name) == result.rematted.end())

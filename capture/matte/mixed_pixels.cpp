@@ -106,9 +106,7 @@ Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOpt
                         const MixedPixelOptions& options) {
   const cv::Mat rgb8 = matte::View(photo), alpha = matte::View(matte);
   const cv::Mat rgb = matte::ToFloat(photo);
-  cv::Mat lab;
-  cv::cvtColor(rgb, lab, cv::COLOR_RGB2Lab);
-  const matte::SkyEstimate sky = matte::EstimateSky(lab, matte_options);
+  const matte::SkyEstimate sky = matte::EstimatePhotoSky(rgb8, matte_options);
   const cv::Mat purity = matte::Purity(rgb, alpha, sky, options);
   // Purity -1 (background unknown): the pixel stays what the matte said.
   const cv::Mat whole = (alpha >= options.pure * 255) & ((purity >= options.pure) | (purity < 0));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 namespace voltree::matte {
 
@@ -77,6 +78,14 @@ SkyEstimate EstimateSky(const cv::Mat& lab, const MatteOptions& options) {
     if (options.horizon < 0) sky.horizon = EstimateHorizonRow(sky.pixels);
   }
   return sky;
+}
+
+SkyEstimate EstimatePhotoSky(const cv::Mat& rgb8, const MatteOptions& options) {
+  CV_Assert(rgb8.type() == CV_8UC3);
+  cv::Mat lab;
+  rgb8.convertTo(lab, CV_32F, 1.0 / 255.0);
+  cv::cvtColor(lab, lab, cv::COLOR_RGB2Lab);
+  return EstimateSky(lab, options);
 }
 
 }  // namespace voltree::matte

@@ -27,6 +27,9 @@ struct SkyEstimate {
 // `lab`: CV_32FC3 CIELab photo.
 SkyEstimate EstimateSky(const cv::Mat& lab, const MatteOptions& options);
 
+// The same from an 8-bit RGB photo (CV_8UC3).
+SkyEstimate EstimatePhotoSky(const cv::Mat& rgb8, const MatteOptions& options);
+
 // The horizon from a sky mask: the row after the last one that still shows sky across at least
 // `min_fraction` of its width and a fifth of the sky-richest row (the ground shows none or a few
 // stray pixels). 0 when no row shows sky.
