@@ -55,8 +55,10 @@ struct HullRematteOptions {
   // gaps against the sky into it).
   bool keep_clear_sky = true;
   // Last, every photo is matted once more where its background is known, so that the pixels a
-  // leaf covers in part are solved instead of whole (mixed_pixels.h).
-  bool matte_mixed_pixels = true;
+  // leaf covers in part are solved instead of whole (mixed_pixels.h). Off by default: it lowers
+  // the alpha the hull is carved from, and from photos alone one aspen photo then fell just under
+  // the mattes-against-cameras guard (recall 0.897 against 0.9).
+  bool matte_mixed_pixels = false;
   MixedPixelOptions mixed_pixels;
   MatteOptions matte;  // how the unknown is solved
   // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
