@@ -13,8 +13,9 @@
 namespace voltree {
 namespace {
 
-// One photo at the comparison size: its tree mask, the mask dilated by a voxel's footprint, and
-// the scale from camera pixels to mask pixels.
+// One photo at the comparison size: its tree mask, what it does not see as sure background
+// dilated by a voxel's footprint (where it cannot carve), and the scale from camera pixels to
+// mask pixels.
 struct PhotoMasks {
   cv::Mat tree, dilated;
   Eigen::Vector2d scale;
@@ -31,8 +32,10 @@ PhotoMasks MakeMasks(const View& view, const Image8& matte, const MatteConsisten
   cv::resize(alpha, small, cv::Size(width, height), 0, 0, cv::INTER_AREA);
   PhotoMasks masks;
   cv::threshold(small, masks.tree, options.matte_threshold * 255.0, 255, cv::THRESH_BINARY);
+  cv::Mat not_background;
+  cv::threshold(small, not_background, options.carve_threshold * 255.0, 255, cv::THRESH_BINARY);
   const int radius = int(std::ceil(voxel_radius_pixels * shrink)) + 1;
-  cv::dilate(masks.tree, masks.dilated,
+  cv::dilate(not_background, masks.dilated,
              cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1)));
   masks.scale = {double(width) / view.camera.width, double(height) / view.camera.height};
   return masks;
@@ -292,6 +295,8 @@ void MatteConsistencyOptions::Check() const {
   if (!(max_second_part > 0 && max_second_part <= 1)) Fail("max second part must be in (0, 1], got ", max_second_part);
   if (resolution < 8 || resolution > 512) Fail("consistency hull resolution must be 8..512, got ", resolution);
   if (!(matte_threshold > 0 && matte_threshold < 1)) Fail("matte threshold must be in (0, 1), got ", matte_threshold);
+  if (!(carve_threshold >= 0 && carve_threshold <= matte_threshold))
+    Fail("carve threshold must be in [0, matte threshold ", matte_threshold, "], got ", carve_threshold);
   if (!(outvoted_fraction >= 0 && outvoted_fraction < 0.5))
     Fail("outvoted fraction must be in [0, 0.5), got ", outvoted_fraction);
   if (!(min_seen_fraction > 0 && min_seen_fraction <= 1))

@@ -10,6 +10,7 @@
 #include "capture/matte/foreground.h"
 #include "capture/matte/grabcut.h"
 #include "capture/matte/mixed_pixels.h"
+#include "capture/matte/narrow_parts.h"
 #include "capture/matte/refine.h"
 #include "capture/matte/sky_estimate.h"
 #include "capture/matte/workspace.h"
@@ -29,6 +30,8 @@ void HullRematteOptions::Check() const {
   if (guard_passes < 0 || guard_passes > 10) Fail("guard passes must be 0..10, got ", guard_passes);
   if (!(confident_alpha > 0 && confident_alpha <= 1)) Fail("confident alpha must be in (0, 1], got ", confident_alpha);
   if (!(majority_share > 0 && majority_share < 1)) Fail("majority share must be in (0, 1), got ", majority_share);
+  if (!(max_missed_narrow > 0 && max_missed_narrow < 1))
+    FailOption("HullRematteOptions.max_missed_narrow", "must be in (0, 1), got ", max_missed_narrow);
   if (narrow_radius_bands < 1 || narrow_radius_bands > 64)
     FailOption("HullRematteOptions.narrow_radius_bands", "must be in [1, 64], got ", narrow_radius_bands);
   if (use_backdrop) backdrop.Check();
@@ -65,9 +68,8 @@ cv::Mat HullGrabCutLabels(const cv::Mat& inside, const cv::Mat& grown, const Ima
 cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alpha, const cv::Mat& inside,
                                      const cv::Mat& grown, const cv::Mat& trimap, const Image8* backdrop,
                                      const HullRematteOptions& options) {
-  cv::Mat wide;
-  cv::morphologyEx(inside, wide, cv::MORPH_OPEN, Disc(options.narrow_radius_bands * HullBand(rgb.cols, rgb.rows)));
-  const cv::Mat missed = (inside != 0) & (wide == 0) & (old_alpha < 128);
+  const cv::Mat missed =
+      matte::NarrowParts(inside, options.narrow_radius_bands * HullBand(rgb.cols, rgb.rows)) & (old_alpha < 128);
   if (cv::countNonZero(missed) == 0) return missed;
   cv::Mat labels = HullGrabCutLabels(inside, grown, backdrop);
   labels.setTo(cv::GC_FGD, (trimap == 255) & (labels != cv::GC_BGD));
@@ -82,6 +84,13 @@ struct KnownBackground {
   std::vector<Image8> parallax, clear_sky;
   const Image8* Parallax(size_t i) const { return parallax.empty() ? nullptr : &parallax[i]; }
   const Image8* ClearSky(size_t i) const { return clear_sky.empty() ? nullptr : &clear_sky[i]; }
+  // Either, CV_8U (nonzero: background); empty when neither is known.
+  cv::Mat Either(size_t i) const {
+    cv::Mat either;
+    for (const Image8* known : {Parallax(i), ClearSky(i)})
+      if (known != nullptr) either = either.empty() ? matte::View(*known) != 0 : either | (matte::View(*known) != 0);
+    return either;
+  }
 };
 
 // Re-mattes one photo inside the hull's projection `hull` (255 inside).
@@ -150,6 +159,28 @@ Image8 BehindHullNearIt(const std::vector<View>& views, const std::vector<Image8
   cv::dilate(matte::View(hulls[target].mask), region, Disc(HullBand(photos[target])));
   region.setTo(0, matte::View(backdrop) != 0);
   return ExplainedBehindHull(views, photos, hulls, target, matte::ToImage8(region), options);
+}
+
+// Mends every matte that misses a narrow part of the hull of all photos (narrow_parts.h); a
+// photo's own miss cannot carve that part, since the hull lets a few photos be outvoted. Returns
+// the mended photos' names.
+std::vector<std::string> MendNarrowParts(const std::vector<View>& views, const std::vector<Image8>& photos,
+                                         std::vector<Image8>& mattes, const KnownBackground& known,
+                                         const HullRematteOptions& options) {
+  const std::vector<HullProjection> hulls =
+      ProjectHull(views, mattes, std::vector<bool>(views.size(), true), views, options.consistency);
+  std::vector<uint8_t> mended(views.size(), 0);
+  tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
+    const int band = HullBand(photos[i]);
+    const matte::NarrowPartMend mend{options.narrow_radius_bands * band, band, options.max_missed_narrow};
+    cv::Mat alpha = matte::View(mattes[i]);  // shares the matte's pixels
+    mended[i] = matte::MendMissedNarrowParts(matte::View(photos[i]), matte::View(hulls[i].mask), known.Either(i), mend,
+                                             options.matte, alpha);
+  });
+  std::vector<std::string> names;
+  for (size_t i = 0; i < views.size(); ++i)
+    if (mended[i]) names.push_back(views[i].name);
+  return names;
 }
 
 // Re-mattes the photos not `trusted` inside the hull of the trusted ones; returns their names
@@ -254,6 +285,7 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
       if (std::find(result.rematted.begin(), result.rematted.end(), name) == result.rematted.end())
         result.rematted.push_back(name);
   }
+  if (options.mend_narrow_parts) result.mended = MendNarrowParts(views, photos, mattes, known, options);
   if (options.matte_mixed_pixels)
     tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
       mattes[i] = MatteMixedPixels(photos[i], mattes[i], options.matte, options.mixed_pixels);
@@ -262,6 +294,16 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
   return result;
 }
+
+namespace {
+
+std::string NameList(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+}  // namespace
 
 HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematteOptions& options, Progress& progress) {
   const std::vector<View> views = ReadColmapModel(dir / "sparse").Views();
@@ -285,6 +327,9 @@ HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematt
                                            : Str(result.rematted.size(), " re-matted inside the visual hull ",
                                                  result.majority_hull ? "all photos agree on by majority" : "of those"),
                    options.use_backdrop ? "; background told by parallax taken out" : "",
+                   result.mended.empty() ? std::string()
+                                         : Str("; ", result.mended.size(), " missed a trunk or bough the others hold (",
+                                               NameList(result.mended), "), mended"),
                    options.matte_mixed_pixels ? "; pixels a leaf covers in part matted again" : "", "; ",
                    result.changed.size(), " mattes changed"));
   return result;

@@ -18,6 +18,8 @@
 //      what two neighbours show at one depth behind it is then taken out (backdrop.h).
 //   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
 //      matted again the same way inside the hull of those it passes.
+//   4. A matte that misses a narrow part of the hull of all (a trunk, a bough) is mended there.
+//   5. Every photo is matted once more where its background is known (mixed_pixels.h).
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
 // one kind usually corrects the other.
 #pragma once
@@ -37,7 +39,11 @@
 namespace voltree {
 
 struct HullRematteOptions {
-  MatteConsistencyOptions consistency;
+  // The hulls that bound the re-matting are carved wherever a photo's alpha is under the tree's
+  // threshold: the mattes are whole until the last pass (the mixed pixels), and the tighter hull
+  // bounds them better (carved at 0.1, the grey trunk of the young oak's test came back at 0.56
+  // of its pixels instead of 0.80). The guard that checks the final mattes carves at 0.1.
+  MatteConsistencyOptions consistency{.carve_threshold = MatteConsistencyOptions{}.matte_threshold};
   // A photo is trusted when it carves at most this fraction of the majority's voxels and keeps at
   // most this many times the median photo's background voxels (matte_consistency.h).
   double max_carve_fraction = 0.15;
@@ -54,11 +60,14 @@ struct HullRematteOptions {
   // first matte's colour alpha said so; the solver, seeded by the hull alone, blurred the crown's
   // gaps against the sky into it).
   bool keep_clear_sky = true;
+  // Then every photo whose matte misses most of a narrow part's centre line, which the others
+  // hold, is matted again there (narrow_parts.h): a trunk cut off in one photo is carved out of
+  // the volume in every view.
+  bool mend_narrow_parts = true;
+  double max_missed_narrow = 0.2;  // the share of a part's centre line a matte may miss
   // Last, every photo is matted once more where its background is known, so that the pixels a
-  // leaf covers in part are solved instead of whole (mixed_pixels.h). Off by default: it lowers
-  // the alpha the hull is carved from, and from photos alone one aspen photo then fell just under
-  // the mattes-against-cameras guard (recall 0.897 against 0.9).
-  bool matte_mixed_pixels = false;
+  // leaf covers in part are solved instead of whole (mixed_pixels.h).
+  bool matte_mixed_pixels = true;
   MixedPixelOptions mixed_pixels;
   MatteOptions matte;  // how the unknown is solved
   // Background told by parallax (backdrop.h) is taken out of every matte first, and stays
@@ -70,6 +79,7 @@ struct HullRematteOptions {
 
 struct HullRematteResult {
   std::vector<std::string> trusted, rematted;
+  std::vector<std::string> mended;   // photos whose matte missed a narrow part the others hold
   std::vector<std::string> changed;  // every photo whose matte changed (re-matted or backdrop taken out)
   // Too few were trusted: the majority hull of all bounded the tree, in every pass after the first
   // too.

@@ -3,17 +3,20 @@
 // boxes apart are two objects in the ring, which one asset cannot hold apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "capture/matte/consistency.h"
 #include "core/error.h"
+#include "expect_check_names.h"
 
 namespace voltree {
 namespace {
 
 struct Box {
   Eigen::Vector3d lo, hi;
+  uint8_t alpha = 255;  // of the pixels that see it
 };
 
 // Whether the ray from `origin` along `direction` meets the box (slab test).
@@ -51,7 +54,8 @@ RingSet PhotographRing(const std::vector<Box>& boxes) {
       for (int x = 0; x < 64; ++x) {
         const Eigen::Vector3d ray = view.PixelRay({x + 0.5, y + 0.5});
         for (const Box& box : boxes)
-          if (Hits(box, view.pose.Center(), ray)) matte.pixels[size_t(y) * 64 + x] = 255;
+          if (Hits(box, view.pose.Center(), ray))
+            matte.pixels[size_t(y) * 64 + x] = std::max(matte.pixels[size_t(y) * 64 + x], box.alpha);
       }
     set.views.push_back(view);
     set.mattes.push_back(std::move(matte));
@@ -88,6 +92,36 @@ TEST(MatteConsistency, TwoTreesInTheRingAreNamed) {
     EXPECT_NE(message.find("two separate objects"), std::string::npos) << message;
     EXPECT_NE(message.find("one tree at a time"), std::string::npos) << message;
   }
+}
+
+// A branch every photo but one holds in part (alpha 0.2, the share of each pixel its leaves cover,
+// once the mixed pixels are solved) and that one photo holds whole. Carved wherever a photo's
+// alpha is under the tree's threshold, the branch left the hull and that photo's recall fell
+// under the guard's limit; it is carved only where a photo is sure of the background.
+TEST(MatteConsistency, ABranchHeldInPartStaysInTheHull) {
+  const Box trunk{{-0.2, -0.2, 0}, {0.2, 0.2, 2}};
+  Box branch{{-0.05, -1.8, 1.1}, {0.05, 0, 1.4}, 51};
+  RingSet set = PhotographRing({trunk, branch});
+  branch.alpha = 255;
+  const size_t whole = 0;  // the camera at (5, 0, 1.5) sees the branch broadside
+  set.mattes[whole] = PhotographRing({trunk, branch}).mattes[whole];
+  const auto recall_of_the_whole_photo = [&](double carve_threshold) {
+    MatteConsistencyOptions options;
+    options.carve_threshold = carve_threshold;
+    return MeasureMatteConsistency(set.views, set.mattes, options).photos[whole].recall;
+  };
+  const double strict = recall_of_the_whole_photo(MatteConsistencyOptions{}.matte_threshold);
+  const double lenient = recall_of_the_whole_photo(MatteConsistencyOptions{}.carve_threshold);
+  std::printf("recall of the photo that holds the branch whole: %.3f carved at the tree's threshold, %.3f now\n",
+              strict, lenient);
+  EXPECT_LT(strict, MatteConsistencyOptions{}.min_recall);
+  EXPECT_GT(lenient, 0.97);
+}
+
+TEST(MatteConsistencyOptions, CheckNamesTheCarveThreshold) {
+  MatteConsistencyOptions options;
+  options.carve_threshold = 0.5;
+  testing::ExpectCheckNames(options, "carve threshold");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "capture/matte/metrics.h"
 #include "core/error.h"
 #include "samples/matte_scene.h"
+#include "expect_check_names.h"
 
 namespace voltree {
 namespace {
@@ -80,23 +81,13 @@ TEST(MatteImage, SameResultTwice) {
   EXPECT_EQ(a.foreground, b.foreground);
 }
 
-// Check() fails on `options` with a message that names `field`.
-void ExpectCheckNames(const MatteOptions& options, const std::string& field) {
-  try {
-    options.Check();
-    ADD_FAILURE() << "expected an Error naming " << field;
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find(field), std::string::npos) << error.what();
-  }
-}
-
 TEST(MatteOptions, CheckNamesTheField) {
   MatteOptions options;
   options.horizon = 1.5;
-  ExpectCheckNames(options, "horizon");
+  testing::ExpectCheckNames(options, "horizon");
   options = MatteOptions{};
   options.gap_distance = 0.0;
-  ExpectCheckNames(options, "gap_distance");
+  testing::ExpectCheckNames(options, "gap_distance");
   EXPECT_THROW(ParseRefineMethod("magic"), Error);
   EXPECT_EQ(ParseRefineMethod("infoflow"), RefineMethod::kInfoFlow);
 }

@@ -10,6 +10,7 @@
 #include "capture/matte/metrics.h"
 #include "capture/young_oak_photos.h"
 #include "core/error.h"
+#include "expect_check_names.h"
 
 namespace voltree {
 namespace {
@@ -50,12 +51,7 @@ TEST(MatteMixedPixels, SolvesTheLeavesAWholeMatteMadeWhole) {
 TEST(MixedPixelOptions, CheckNamesTheField) {
   MixedPixelOptions options;
   options.pure = 0;
-  try {
-    options.Check();
-    FAIL() << "a zero purity was accepted";
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("MixedPixelOptions.pure"), std::string::npos) << error.what();
-  }
+  testing::ExpectCheckNames(options, "MixedPixelOptions.pure");
 }
 
 }  // namespace

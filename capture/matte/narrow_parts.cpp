@@ -1,0 +1,70 @@
+#include "capture/matte/narrow_parts.h"
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc.hpp>
+#include <vector>
+
+#include "capture/matte/cv.h"
+#include "capture/matte/refine.h"
+
+namespace voltree::matte {
+namespace {
+
+cv::Mat Disc(int radius) {
+  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
+}
+
+}  // namespace
+
+cv::Mat NarrowParts(const cv::Mat& inside, int radius) {
+  cv::Mat wide;
+  cv::morphologyEx(inside, wide, cv::MORPH_OPEN, Disc(radius));
+  return (inside != 0) & (wide == 0);
+}
+
+bool MendMissedNarrowParts(const cv::Mat& rgb, const cv::Mat& inside, const cv::Mat& background,
+                           const NarrowPartMend& mend, const MatteOptions& options, cv::Mat& alpha) {
+  cv::Mat parts;
+  // The opening also leaves slivers along the crown's outline; those are no part.
+  cv::morphologyEx(NarrowParts(inside, mend.radius), parts, cv::MORPH_OPEN, Disc(mend.band));
+  if (cv::countNonZero(parts) == 0) return false;
+  cv::Mat centre;
+  cv::ximgproc::thinning(parts, centre);
+  cv::Mat missed = centre & (alpha <= mend.carve_alpha);
+  if (!background.empty()) missed.setTo(0, background != 0);
+  cv::Mat labels;
+  const int count = cv::connectedComponents(parts, labels, 8, CV_32S);
+  std::vector<int> centre_pixels(count, 0), missed_pixels(count, 0);
+  for (int y = 0; y < labels.rows; ++y)
+    for (int x = 0; x < labels.cols; ++x) {
+      const int label = labels.at<int>(y, x);
+      centre_pixels[label] += centre.at<uint8_t>(y, x) != 0;
+      missed_pixels[label] += missed.at<uint8_t>(y, x) != 0;
+    }
+  cv::Mat mended = cv::Mat::zeros(parts.size(), CV_8UC1);
+  bool any = false;
+  for (int label = 1; label < count; ++label)
+    if (missed_pixels[label] >= 2 * mend.radius && missed_pixels[label] > mend.max_missed * centre_pixels[label]) {
+      mended.setTo(255, labels == label);
+      any = true;
+    }
+  if (!any) return false;
+  // Outside the mended parts the matte is known where it is sure (context for the solver) and
+  // kept as it is.
+  cv::Mat trimap(alpha.size(), CV_8UC1, cv::Scalar(128));
+  trimap.setTo(0, alpha == 0);
+  trimap.setTo(255, alpha == 255);
+  trimap.setTo(128, mended & (alpha < 255));
+  trimap.setTo(255, mended & missed);
+  if (!background.empty()) trimap.setTo(0, mended & (background != 0));
+  cv::Mat estimate;
+  alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
+  estimate.setTo(1.0f, trimap == 255);
+  estimate.setTo(0.0f, trimap == 0);
+  const cv::Mat solve = mended & (trimap == 128);
+  const cv::Mat solved = AlphaTo8(RefineAlpha(rgb, estimate, trimap, solve, options));
+  solved.copyTo(alpha, mended);
+  return true;
+}
+
+}  // namespace voltree::matte
