@@ -1,7 +1,9 @@
-// Internal to the matting files: views and conversions between voltree images and cv::Mat.
+// Internal to the matting files: views and conversions between voltree images and cv::Mat, and a
+// disc for morphology.
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/image.h"
 
@@ -34,6 +36,11 @@ inline cv::Mat AlphaTo8(const cv::Mat& alpha) {
   cv::Mat out;
   alpha.convertTo(out, CV_8U, 255.0, 0.0);  // convertTo rounds and saturates
   return out;
+}
+
+// A filled disc of `radius` pixels, for morphology.
+inline cv::Mat Disc(int radius) {
+  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
 }
 
 }  // namespace voltree::matte

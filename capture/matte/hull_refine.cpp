@@ -40,13 +40,16 @@ void HullRematteOptions::Check() const {
 
 namespace {
 
-cv::Mat Disc(int radius) {
-  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
-}
-
 // How far beyond the hull's projection a photo is still matted (the hull is coarse).
 int HullBand(int width, int height) { return std::max(2, std::min(width, height) / 128); }
 int HullBand(const Image8& photo) { return HullBand(photo.width, photo.height); }
+
+// "a, b, c", for the progress line.
+std::string NameList(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
 
 // GrabCut's labels for a photo matted inside the hull's projection: probably tree inside it,
 // certain background outside it grown by a band and where the backdrop explains the pixel,
@@ -82,6 +85,7 @@ cv::Mat NarrowPartsTheOldMatteMissed(const cv::Mat& rgb, const cv::Mat& old_alph
 // the eye-level ring do not see it at all.
 struct KnownBackground {
   std::vector<Image8> parallax, clear_sky;
+  std::vector<matte::SkyEstimate> skies;  // estimated once; empty when no pass needs them
   const Image8* Parallax(size_t i) const { return parallax.empty() ? nullptr : &parallax[i]; }
   const Image8* ClearSky(size_t i) const { return clear_sky.empty() ? nullptr : &clear_sky[i]; }
   // Either, CV_8U (nonzero: background); empty when neither is known.
@@ -100,10 +104,9 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
   const cv::Mat old_alpha = matte::View(old_matte);
   const cv::Mat inside = matte::View(hull);
   const int band = HullBand(photo);
-  const auto disc = Disc;
   cv::Mat grown, shrunk;
-  cv::dilate(inside, grown, disc(band));
-  cv::erode(inside, shrunk, disc(2 * band));
+  cv::dilate(inside, grown, matte::Disc(band));
+  cv::erode(inside, shrunk, matte::Disc(2 * band));
   cv::Mat trimap(photo.height, photo.width, CV_8UC1, cv::Scalar(128));
   trimap.setTo(0, grown == 0);
   trimap.setTo(255, (shrunk != 0) & (old_alpha >= options.confident_alpha * 255));
@@ -119,8 +122,8 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
     const cv::Mat tree = matte::GrabCutForeground(rgb, labels, 5, options.matte.grabcut_max_side) & (grown != 0);
     const int radius = options.matte.BandRadius(photo.width, photo.height);
     cv::Mat sure, near;
-    cv::erode(tree, sure, disc(radius));
-    cv::dilate(tree, near, disc(radius));
+    cv::erode(tree, sure, matte::Disc(radius));
+    cv::dilate(tree, near, matte::Disc(radius));
     trimap.setTo(0, near == 0);
     trimap.setTo(255, sure != 0);
     tree.convertTo(estimate, CV_32F, 1.0 / 255.0);
@@ -156,7 +159,7 @@ Image8 BehindHullNearIt(const std::vector<View>& views, const std::vector<Image8
                         const std::vector<HullProjection>& hulls, size_t target, const Image8& backdrop,
                         const BackdropOptions& options) {
   cv::Mat region;
-  cv::dilate(matte::View(hulls[target].mask), region, Disc(HullBand(photos[target])));
+  cv::dilate(matte::View(hulls[target].mask), region, matte::Disc(HullBand(photos[target])));
   region.setTo(0, matte::View(backdrop) != 0);
   return ExplainedBehindHull(views, photos, hulls, target, matte::ToImage8(region), options);
 }
@@ -241,10 +244,11 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   KnownBackground known;
   if (options.use_backdrop) known.parallax.resize(views.size());
   if (options.keep_clear_sky) known.clear_sky.resize(views.size());
+  if (options.keep_clear_sky || options.matte_mixed_pixels) known.skies.resize(views.size());
   tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
     if (options.use_backdrop) known.parallax[i] = ExplainedByBackdrop(views, photos, before, i, options.backdrop);
-    if (options.keep_clear_sky)
-      known.clear_sky[i] = matte::ToImage8(matte::EstimatePhotoSky(matte::View(photos[i]), options.matte).ClearSky());
+    if (!known.skies.empty()) known.skies[i] = matte::EstimatePhotoSky(matte::View(photos[i]), options.matte);
+    if (options.keep_clear_sky) known.clear_sky[i] = matte::ToImage8(known.skies[i].ClearSky());
   });
   if (options.use_backdrop)
     for (size_t i = 0; i < views.size(); ++i) matte::View(mattes[i]).setTo(0, matte::View(known.parallax[i]) != 0);
@@ -288,22 +292,12 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   if (options.mend_narrow_parts) result.mended = MendNarrowParts(views, photos, mattes, known, options);
   if (options.matte_mixed_pixels)
     tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
-      mattes[i] = MatteMixedPixels(photos[i], mattes[i], options.matte, options.mixed_pixels);
+      mattes[i] = MatteMixedPixels(photos[i], mattes[i], known.skies[i], options.matte, options.mixed_pixels);
     });
   for (size_t i = 0; i < views.size(); ++i)
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
   return result;
 }
-
-namespace {
-
-std::string NameList(const std::vector<std::string>& names) {
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
-  return list;
-}
-
-}  // namespace
 
 HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematteOptions& options, Progress& progress) {
   const std::vector<View> views = ReadColmapModel(dir / "sparse").Views();

@@ -104,9 +104,14 @@ cv::Mat Purity(const cv::Mat& rgb, const cv::Mat& alpha, const SkyEstimate& sky,
 
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOptions& matte_options,
                         const MixedPixelOptions& options) {
+  return MatteMixedPixels(photo, matte, matte::EstimatePhotoSky(matte::View(photo), matte_options), matte_options,
+                          options);
+}
+
+Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::SkyEstimate& sky,
+                        const MatteOptions& matte_options, const MixedPixelOptions& options) {
   const cv::Mat rgb8 = matte::View(photo), alpha = matte::View(matte);
   const cv::Mat rgb = matte::ToFloat(photo);
-  const matte::SkyEstimate sky = matte::EstimatePhotoSky(rgb8, matte_options);
   const cv::Mat purity = matte::Purity(rgb, alpha, sky, options);
   // Purity -1 (background unknown): the pixel stays what the matte said.
   const cv::Mat whole = (alpha >= options.pure * 255) & ((purity >= options.pure) | (purity < 0));

@@ -10,6 +10,10 @@
 
 namespace voltree {
 
+namespace matte {
+struct SkyEstimate;  // sky_estimate.h
+}  // namespace matte
+
 struct MixedPixelOptions {
   // Below the sky (or where there is none), the background seen through the crown's gaps: the
   // mean of the matte's background pixels within `gap_radius`, trusted where at least
@@ -27,5 +31,10 @@ struct MixedPixelOptions {
 // known tree where it was whole and its colour is pure; the solver (`matte_options`) in between.
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOptions& matte_options,
                         const MixedPixelOptions& options);
+
+// The same with the photo's sky already estimated (matte::EstimatePhotoSky with `matte_options`),
+// for a caller that needs it too.
+Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::SkyEstimate& sky,
+                        const MatteOptions& matte_options, const MixedPixelOptions& options);
 
 }  // namespace voltree

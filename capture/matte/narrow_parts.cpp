@@ -8,13 +8,6 @@
 #include "capture/matte/refine.h"
 
 namespace voltree::matte {
-namespace {
-
-cv::Mat Disc(int radius) {
-  return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
-}
-
-}  // namespace
 
 cv::Mat NarrowParts(const cv::Mat& inside, int radius) {
   cv::Mat wide;
