@@ -117,7 +117,8 @@ Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::S
   const cv::Mat whole = (alpha >= options.pure * 255) & ((purity >= options.pure) | (purity < 0));
   cv::Mat trimap(alpha.size(), CV_8U, cv::Scalar(128));
   trimap.setTo(255, whole);
-  trimap.setTo(0, (alpha == 0) | sky.ClearSky());
+  trimap.setTo(0, alpha == 0);
+  if (options.keep_clear_sky) trimap.setTo(0, sky.ClearSky());
   cv::Mat estimate;
   alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
   estimate.setTo(0.0f, trimap == 0);
