@@ -15,6 +15,7 @@
 #include "capture/matte/sky_estimate.h"
 #include "capture/matte/workspace.h"
 #include "core/error.h"
+#include "core/fixed.h"
 
 namespace voltree {
 namespace fs = std::filesystem;
@@ -23,8 +24,9 @@ void HullRematteOptions::Check() const {
   consistency.Check();
   matte.Check();
   if (!(max_carve_fraction > 0 && max_carve_fraction < 1))
-    Fail("max carve fraction must be in (0, 1), got ", max_carve_fraction);
-  if (!(max_keep_ratio >= 1)) Fail("max keep ratio must be at least 1, got ", max_keep_ratio);
+    FailOption("HullRematteOptions.max_carve_fraction", "must be in (0, 1), got ", max_carve_fraction);
+  if (!(max_keep_ratio >= 1))
+    FailOption("HullRematteOptions.max_keep_ratio", "must be at least 1, got ", max_keep_ratio);
   if (!(min_trusted_fraction > 0 && min_trusted_fraction <= 1))
     Fail("min trusted fraction must be in (0, 1], got ", min_trusted_fraction);
   if (guard_passes < 0 || guard_passes > 10) Fail("guard passes must be 0..10, got ", guard_passes);
@@ -39,6 +41,21 @@ void HullRematteOptions::Check() const {
 }
 
 namespace {
+
+// One photo's minority votes against the limits of trust, and what became of its matte.
+std::string DescribeVotes(const std::string& name, const MinorityVotes& vote, double median_keeps,
+                          const HullRematteResult& result, const HullRematteOptions& options) {
+  const auto percent = [](double share) { return Str(FixedDecimals(100 * share, 1), " %"); };
+  const auto holds = [&](const std::vector<std::string>& names) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  return Str(name, ": carves ", percent(double(vote.carves) / std::max<double>(vote.majority_voxels, 1)),
+             " of the voxels the majority holds (at most ", percent(options.max_carve_fraction), "), keeps ",
+             vote.keeps, " the majority carves (", FixedDecimals(double(vote.keeps) / std::max(median_keeps, 1.0), 1),
+             " times the median photo, at most ", FixedDecimals(options.max_keep_ratio, 1),
+             "): ", holds(result.trusted) ? "trusted" : "not trusted", holds(result.rematted) ? ", matted again" : "",
+             holds(result.mended) ? ", a narrow part mended" : "");
+}
 
 // How far beyond the hull's projection a photo is still matted (the hull is coarse).
 int HullBand(int width, int height) { return std::max(2, std::min(width, height) / 128); }
@@ -264,7 +281,6 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   HullRematteResult result;
   for (size_t i = 0; i < views.size(); ++i) {
     const MinorityVotes& vote = votes[i];
-    result.votes.push_back(Str(views[i].name, " ", vote.carves, "/", vote.majority_voxels, " ", vote.keeps));
     trusted[i] = double(vote.carves) <= options.max_carve_fraction * double(vote.majority_voxels) &&
                  double(vote.keeps) <= options.max_keep_ratio * std::max(median_keeps, 1.0);
     if (trusted[i]) result.trusted.push_back(views[i].name);
@@ -299,6 +315,8 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
   }
   for (size_t i = 0; i < views.size(); ++i)
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
+  for (size_t i = 0; i < views.size(); ++i)
+    result.votes.push_back(DescribeVotes(views[i].name, votes[i], median_keeps, result, options));
   return result;
 }
 

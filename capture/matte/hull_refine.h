@@ -85,7 +85,7 @@ struct HullRematteResult {
   // Too few were trusted: the majority hull of all bounded the tree, in every pass after the first
   // too.
   bool majority_hull = false;
-  std::vector<std::string> votes;  // per photo: "name carves/majority keeps"
+  std::vector<std::string> votes;  // per photo: its minority votes, the limits, and its verdict
 };
 
 // `photos[i]` (RGB) and `mattes[i]` (1 channel, replaced for re-matted photos) belong to views[i].
