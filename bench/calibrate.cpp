@@ -3,7 +3,7 @@
 // the mean reprojection error, and the cameras' errors after similarity alignment
 // (capture/calibrate_accuracy.h), plus how well the normalization found the tree frame: the up
 // axis, the origin (trunk base) and the height, against the studio's true frame.
-//   voltree-bench-calibrate --views 24 --size 512 --max-features 2048
+//   voltree-bench-calibrate --views 24 --size 512 --max-features 8192
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -33,8 +33,8 @@ struct BenchOptions {
   int views = 24;
   int rings = 2;
   int size = 512;
-  double min_elevation = 5;  // the studio's default lowest ring
-  int max_features = 2048;
+  double min_elevation = 5;                            // the studio's default lowest ring
+  int max_features = CalibrateOptions{}.max_features;  // what `run` and `calibrate` use
   std::string mask = "all";
   fs::path work = fs::temp_directory_path() / "voltree_bench_calibrate";
 };

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "capture/calibrate.h"
 #include "capture/calibrate_accuracy.h"
 #include "capture/colmap_binary.h"
 #include "capture/matte.h"
@@ -37,7 +38,7 @@ struct BenchOptions {
   int held_out = 8;
   int size = 512;
   double min_elevation = 5;
-  int max_features = 2048;
+  int max_features = CalibrateOptions{}.max_features;  // what `run` and `calibrate` use
   int levels = 7;
   std::string up = "y";  // of mesh files (glTF convention)
   bool truth_runs = true;
