@@ -306,13 +306,11 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
         result.rematted.push_back(name);
   }
   if (options.mend_narrow_parts) result.mended = MendNarrowParts(views, photos, mattes, known, options);
-  if (options.matte_mixed_pixels) {
-    MixedPixelOptions mixed_pixels = options.mixed_pixels;
-    mixed_pixels.keep_clear_sky = options.keep_clear_sky;
+  if (options.matte_mixed_pixels)
     tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
-      mattes[i] = MatteMixedPixels(photos[i], mattes[i], known.skies[i], options.matte, mixed_pixels);
+      mattes[i] = MatteMixedPixels(photos[i], mattes[i], known.skies[i], known.ClearSky(i), options.matte,
+                                   options.mixed_pixels);
     });
-  }
   for (size_t i = 0; i < views.size(); ++i)
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
   for (size_t i = 0; i < views.size(); ++i)

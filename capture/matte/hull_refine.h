@@ -58,8 +58,7 @@ struct HullRematteOptions {
   int narrow_radius_bands = 6;
   // The sky this photo's colour model explains stays background when it is matted again (the
   // first matte's colour alpha said so; the solver, seeded by the hull alone, blurred the crown's
-  // gaps against the sky into it). It rules the last pass too (its `keep_clear_sky` is set from
-  // this one).
+  // gaps against the sky into it); in the last pass too.
   bool keep_clear_sky = true;
   // Then every photo whose matte misses most of a narrow part's centre line, which the others
   // hold, is matted again there (narrow_parts.h): a trunk cut off in one photo is carved out of

@@ -104,12 +104,13 @@ cv::Mat Purity(const cv::Mat& rgb, const cv::Mat& alpha, const SkyEstimate& sky,
 
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOptions& matte_options,
                         const MixedPixelOptions& options) {
-  return MatteMixedPixels(photo, matte, matte::EstimatePhotoSky(matte::View(photo), matte_options), matte_options,
-                          options);
+  const matte::SkyEstimate sky = matte::EstimatePhotoSky(matte::View(photo), matte_options);
+  const Image8 clear_sky = matte::ToImage8(sky.ClearSky());
+  return MatteMixedPixels(photo, matte, sky, &clear_sky, matte_options, options);
 }
 
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::SkyEstimate& sky,
-                        const MatteOptions& matte_options, const MixedPixelOptions& options) {
+                        const Image8* clear_sky, const MatteOptions& matte_options, const MixedPixelOptions& options) {
   const cv::Mat rgb8 = matte::View(photo), alpha = matte::View(matte);
   const cv::Mat rgb = matte::ToFloat(photo);
   const cv::Mat purity = matte::Purity(rgb, alpha, sky, options);
@@ -118,7 +119,7 @@ Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::S
   cv::Mat trimap(alpha.size(), CV_8U, cv::Scalar(128));
   trimap.setTo(255, whole);
   trimap.setTo(0, alpha == 0);
-  if (options.keep_clear_sky) trimap.setTo(0, sky.ClearSky());
+  if (clear_sky != nullptr) trimap.setTo(0, matte::View(*clear_sky) != 0);
   cv::Mat estimate;
   alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
   estimate.setTo(0.0f, trimap == 0);

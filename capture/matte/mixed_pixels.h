@@ -22,21 +22,21 @@ struct MixedPixelOptions {
   int gap_radius = 7;
   int min_gap_pixels = 6;
   double min_contrast = 12.0;
-  int tree_radius = 8;         // the purest tree colour is sought this far, among alpha >= 0.5
-  double pure = 0.95;          // a pixel of alpha and purity at least this stays known tree
-  bool keep_clear_sky = true;  // the clear sky known background, not left to the solver
-  void Check() const;          // throws OptionError naming the field
+  int tree_radius = 8;  // the purest tree colour is sought this far, among alpha >= 0.5
+  double pure = 0.95;   // a pixel of alpha and purity at least this stays known tree
+  void Check() const;   // throws OptionError naming the field
 };
 
-// `matte` (1 channel) of `photo` (RGB) matted again: background where it was, and the clear sky
-// unless `keep_clear_sky` is off; known tree where it was whole and its colour is pure; the
-// solver (`matte_options`) in between.
+// `matte` (1 channel) of `photo` (RGB) matted again: background where it was, and the clear sky;
+// known tree where it was whole and its colour is pure; the solver (`matte_options`) in between.
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOptions& matte_options,
                         const MixedPixelOptions& options);
 
 // The same with the photo's sky already estimated (matte::EstimatePhotoSky with `matte_options`),
-// for a caller that needs it too.
+// for a caller that needs it too, and the background known to it: `clear_sky` (255 where the
+// photo certainly shows sky, SkyEstimate::ClearSky) stays background; nullptr leaves the sky to
+// the solver.
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::SkyEstimate& sky,
-                        const MatteOptions& matte_options, const MixedPixelOptions& options);
+                        const Image8* clear_sky, const MatteOptions& matte_options, const MixedPixelOptions& options);
 
 }  // namespace voltree
