@@ -285,7 +285,8 @@ std::vector<OptionSpec> RunFlags() {
        {},
        "Check the existing mattes against each other through the cameras in sparse/ and matte again, inside the "
        "visual hull of the others, the photos that disagree (what 'run' does with photos alone); their mattes and "
-       "foregrounds are replaced"},
+       "foregrounds are replaced, and the tree's bounds in scene.json are found again from the new mattes (unless the "
+       "studio wrote them: those are the true bounds)"},
   };
 }
 

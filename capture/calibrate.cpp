@@ -185,6 +185,12 @@ void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, 
                Str("bounds from the mattes' ", bounds.source, " written to ", (workspace / "scene.json").string()));
 }
 
+bool SceneHasTrueBounds(const fs::path& workspace) {
+  const fs::path path = workspace / "scene.json";
+  if (!fs::exists(path)) return false;
+  return nlohmann::json::parse(ReadFile(path)).value("source", std::string()) == "studio";
+}
+
 CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {
   options.Check();
   CalibrateReport report;

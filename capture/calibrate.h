@@ -80,4 +80,8 @@ CalibrateReport CalibrateWorkspace(const std::filesystem::path& workspace, const
 // when the mattes' visual hull is empty.
 void UpdateBoundsFromMattes(const std::filesystem::path& workspace, const HullOptions& hull, Progress& progress);
 
+// Whether DIR/scene.json holds the tree's true bounds (the studio's, measured on the tree itself),
+// which a visual hull could only loosen: it reaches below the ground, where no photo sees.
+bool SceneHasTrueBounds(const std::filesystem::path& workspace);
+
 }  // namespace voltree

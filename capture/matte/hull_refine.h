@@ -16,9 +16,10 @@
 //      The sky the photo's own colour model explains stays background (parallax cannot tell
 //      it behind the crown: the eye-level ring's neighbours do not see that sky). Near the hull,
 //      what two neighbours show at one depth behind it is then taken out (backdrop.h).
-//   3. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would name are
-//      matted again the same way inside the hull of those it passes.
-//   4. A matte that misses a narrow part of the hull of all (a trunk, a bough) is mended there.
+//   3. A matte that misses a narrow part of the majority hull of all (a trunk, a bough) is mended
+//      there. Then, up to `guard_passes` times, the photos the guard (matte_consistency.h) would
+//      name are matted again the same way inside the hull of those it passes.
+//   4. The narrow parts are mended once more.
 //   5. Every photo is matted once more where its background is known (mixed_pixels.h).
 // Photos with sky behind the crown and those with ground behind it fail in different ways, so
 // one kind usually corrects the other.
@@ -60,10 +61,14 @@ struct HullRematteOptions {
   // first matte's colour alpha said so; the solver, seeded by the hull alone, blurred the crown's
   // gaps against the sky into it); in the last pass too.
   bool keep_clear_sky = true;
-  // Then every photo whose matte misses most of a narrow part's centre line, which the others
-  // hold, is matted again there (narrow_parts.h): a trunk cut off in one photo is carved out of
-  // the volume in every view.
+  // Every photo whose matte misses most of a narrow part's centre line, which the others hold,
+  // is matted again there (narrow_parts.h), before the guard's passes and after them: a
+  // trunk cut off in one photo is carved out of the volume in every view.
   bool mend_narrow_parts = true;
+  // Then also the narrow parts of the majority's hull, which more photos may miss than the usual
+  // hull lets be outvoted (the aspen at 20°: held-out alpha PSNR 21.63 -> 22.91 dB, recall
+  // 0.847 -> 0.893, matte MSE 0.0045 -> 0.0036, on the same cameras).
+  bool mend_inside_majority_hull = true;
   double max_missed_narrow = 0.2;  // the share of a part's centre line a matte may miss
   // Last, every photo is matted once more where its background is known, so that the pixels a
   // leaf covers in part are solved instead of whole (mixed_pixels.h).

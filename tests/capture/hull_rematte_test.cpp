@@ -32,6 +32,30 @@ Image8 SkylineOnly(const Image8& truth) {
   return matte;
 }
 
+bool LeafGreen(const Image8& photo, int x, int y) {
+  const int r = photo.at(x, y, 0), g = photo.at(x, y, 1), b = photo.at(x, y, 2);
+  return g > r + 8 && g > b + 8;
+}
+
+// The aspen's eye-level photos show a grey trunk against grey soil: `photo` with every pixel of
+// the tree that is not leaf green painted that grey.
+Image8 WithGreyBark(Image8 photo, const Image8& truth) {
+  for (int y = 0; y < truth.height; ++y)
+    for (int x = 0; x < truth.width; ++x)
+      if (truth.at(x, y) > 127 && !LeafGreen(photo, x, y))
+        for (int c = 0; c < 3; ++c) photo.at(x, y, c) = uint8_t(c == 2 ? 150 : 140);
+  return photo;
+}
+
+// The row a third of the tree's height above its lowest pixel in `matte`: below it, the trunk.
+int TrunkRow(const Image8& matte) {
+  int top = matte.height, bottom = 0;
+  for (int y = 0; y < matte.height; ++y)
+    for (int x = 0; x < matte.width; ++x)
+      if (matte.at(x, y) > 127) top = std::min(top, y), bottom = std::max(bottom, y);
+  return bottom - (bottom - top) / 3;
+}
+
 class HullRematte : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -43,11 +67,6 @@ class HullRematte : public ::testing::Test {
   }
 
   static bool Missed(size_t i) { return EveryOtherLowerRingPhoto(i, views_.size()); }
-
-  static bool LeafGreen(const Image8& photo, int x, int y) {
-    const int r = photo.at(x, y, 0), g = photo.at(x, y, 1), b = photo.at(x, y, 2);
-    return g > r + 8 && g > b + 8;
-  }
 
   static inline std::vector<View> views_;
   static inline std::vector<Image8> photos_, truth_;
@@ -98,16 +117,9 @@ TEST_F(HullRematte, FindsTheTrunkTheFirstMatteCutOff) {
   std::vector<Image8> first, photos = photos_;
   for (size_t i = 0; i < views_.size(); ++i) {
     Image8 matte = truth_[i];
-    for (int y = 0; y < matte.height; ++y)
-      for (int x = 0; x < matte.width; ++x)
-        if (matte.at(x, y) > 127 && !LeafGreen(photos[i], x, y))
-          for (int c = 0; c < 3; ++c) photos[i].at(x, y, c) = uint8_t(c == 2 ? 150 : 140);
+    photos[i] = WithGreyBark(photos[i], truth_[i]);
     if (Missed(i)) {
-      int top = matte.height, bottom = 0;
-      for (int y = 0; y < matte.height; ++y)
-        for (int x = 0; x < matte.width; ++x)
-          if (matte.at(x, y) > 127) top = std::min(top, y), bottom = std::max(bottom, y);
-      trunk_row[i] = bottom - (bottom - top) / 3;
+      trunk_row[i] = TrunkRow(matte);
       for (int y = 0; y < matte.height; ++y)
         for (int x = 0; x < matte.width; ++x)
           matte.at(x, y) = y < matte.height / 8 ? 255 : LeafGreen(photos[i], x, y) ? matte.at(x, y) : 0;
@@ -140,6 +152,65 @@ TEST_F(HullRematte, FindsTheTrunkTheFirstMatteCutOff) {
   EXPECT_GT(with, 0.7);
   EXPECT_GT(with, without + 0.2);
   EXPECT_GT(defaults, 0.7);
+}
+
+// More eye-level photos miss the trunk than the usual hull lets be outvoted: on the aspen at 20°,
+// 3 of 12 after the first pass, then 9 of 12 once the photos matted again inside that hull had
+// lost it too. Here the mattes are true but for the trunk below the crown, cut off in half of
+// the lower ring's photos (4 of 16), and every photo is trusted and none matted again, so only
+// the mend can bring the trunk back. At 384²: at 192² the trunk is too short to be a narrow part.
+// The trunk's recall in those photos. Measured: 0.145, 2 photos mended, with the majority's hull;
+// 0.000, none mended, inside the usual hull alone (it carves the trunk). The young oak's hull is
+// coarse around a short trunk, so only part of it comes back; on the aspen, whose trunk is long,
+// the bench measures what it is worth (README, Capture).
+TEST(HullRematteTrunk, MendsATrunkThatSeveralPhotosMissed) {
+  const test::YoungOakPhotos set = test::PhotographYoungOak("--min-elevation 20", 384);
+  ASSERT_FALSE(set.views.empty());
+  const size_t count = set.views.size();
+  const auto cut = [&](size_t i) { return i < count / 2 && i % 2 == 0; };
+  std::vector<int> trunk_row(count, 0);
+  std::vector<Image8> mattes;
+  for (size_t i = 0; i < count; ++i) {
+    Image8 matte = set.truth[i];
+    if (cut(i)) {
+      trunk_row[i] = TrunkRow(matte);
+      for (int y = trunk_row[i]; y < matte.height; ++y)
+        for (int x = 0; x < matte.width; ++x) matte.at(x, y) = 0;
+    }
+    mattes.push_back(std::move(matte));
+  }
+  HullRematteOptions options;  // the mend alone: every photo trusted, no guard's passes
+  options.max_carve_fraction = 0.99;
+  options.max_keep_ratio = 1e6;
+  options.guard_passes = 0;
+  // A narrow part must be twice the radius long: the young oak's trunk below the crown is
+  // shorter than the aspen's.
+  options.narrow_radius_bands = 5;
+  auto trunk_recall = [&](bool majority, size_t* mended) {
+    options.mend_inside_majority_hull = majority;
+    std::vector<Image8> mended_mattes = mattes;
+    *mended = RematteFromHull(set.views, set.photos, mended_mattes, options).mended.size();
+    double trunk = 0, found = 0;
+    for (size_t i = 0; i < count; ++i) {
+      if (!cut(i)) continue;
+      for (int y = trunk_row[i]; y < set.truth[i].height; ++y)
+        for (int x = 0; x < set.truth[i].width; ++x)
+          if (set.truth[i].at(x, y) > 127) {
+            ++trunk;
+            found += mended_mattes[i].at(x, y) > 127;
+          }
+    }
+    return found / std::max(trunk, 1.0);
+  };
+  size_t mended = 0, mended_before = 0;
+  const double recall = trunk_recall(true, &mended), before = trunk_recall(false, &mended_before);
+  std::printf(
+      "the trunk below the crown in the photos that missed it: recall %.3f, %zu mended (%.3f, %zu mended "
+      "inside the hull that lets a few photos be outvoted)\n",
+      recall, mended, before, mended_before);
+  EXPECT_GE(mended, 2u);
+  EXPECT_EQ(mended_before, 0u);
+  EXPECT_GT(recall, before + 0.1);
 }
 
 // The eye-level ring of the default rings sees sky behind the upper crown (the plain backdrop:

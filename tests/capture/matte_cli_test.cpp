@@ -13,6 +13,7 @@
 #include "capture/matte/metrics.h"
 #include "capture/matte/workspace.h"
 #include "capture/photo_folder.h"
+#include <nlohmann/json.hpp>
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
@@ -144,6 +145,10 @@ TEST_F(MatteCliTest, RecheckNamesTheMatteThatHoldsTheFrameAndWhy) {
   test::Outcome outcome =
       Run(Str("synth --tree young-oak --views 16 --held-out 0 --size 192 --quiet -o '", workspace.string(), "'"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const auto lowest = [&] {  // the bounds' lowest point (the tree frame: +Z up, 0 at the trunk's base)
+    return nlohmann::json::parse(ReadFile(workspace / "scene.json"))["bounds_min"][2].get<double>();
+  };
+  const double base = lowest();
   const fs::path wrong = workspace / "mattes" / "view_003.png";
   const Image8 truth = ReadImage8(wrong, 1);
   Image8 full(truth.width, truth.height, 1);
@@ -162,6 +167,19 @@ TEST_F(MatteCliTest, RecheckNamesTheMatteThatHoldsTheFrameAndWhy) {
   const double before = CompareMattes(full, truth).mse, after = CompareMattes(ReadImage8(wrong, 1), truth).mse;
   std::printf("the full matte: MSE %.1f before, %.1f matted again\n", before, after);
   EXPECT_LT(after, 0.1 * before);
+  // The studio's bounds are the tree's own and stay. Bounds from a calibration are found again
+  // from the new mattes (the first mattes' hull may have cut the trunk off), down to its base.
+  EXPECT_EQ(outcome.output.find("bounds from the mattes'"), std::string::npos);
+  EXPECT_EQ(lowest(), base);
+  nlohmann::json scene = nlohmann::json::parse(ReadFile(workspace / "scene.json"));
+  scene["source"] = "colmap";
+  scene["bounds_min"][2] = base + 1.0;  // as if the first mattes had lost the trunk's lower metre
+  WriteFileAtomic(workspace / "scene.json", scene.dump(2));
+  outcome = Run(Str("matte '", workspace.string(), "' --recheck"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("bounds from the mattes' visual hull"), std::string::npos);
+  std::printf("the bounds' lowest point: %.3f from the studio, %.3f from the mattes\n", base, lowest());
+  EXPECT_LT(lowest(), base + 0.05);
 }
 
 // The young oak from the higher ring, ground behind the whole tree: GrabCut alone closes the

@@ -22,13 +22,13 @@ struct YoungOakPhotos {
   std::vector<Image8> photos, truth;
 };
 
-// 16 photos, no held-out views, at 192² (about a second), with `extra` on synth's command line;
-// empty when the studio fails.
-inline YoungOakPhotos PhotographYoungOak(const std::string& extra) {
+// 16 photos, no held-out views, at `size`² (192²: about a second), with `extra` on synth's
+// command line; empty when the studio fails.
+inline YoungOakPhotos PhotographYoungOak(const std::string& extra, int size = 192) {
   // The process id as well: a suite photographs its set before any of its tests runs.
   const std::filesystem::path dir = voltree::testing::FreshFolder(Str("young_oak_", ::getpid()));
   YoungOakPhotos set;
-  if (Voltree("synth --tree young-oak --views 16 --held-out 0 --size 192 --quiet --force " + extra + " -o " +
+  if (Voltree(Str("synth --tree young-oak --views 16 --held-out 0 --size ", size, " --quiet --force ", extra) + " -o " +
               dir.string()) != 0)
     return set;
   set.views = ReadColmapModel(dir / "sparse").Views();
