@@ -39,7 +39,7 @@ void AddMatteCommand(CLI::App& app) {
       for (const std::string& line : result.votes) progress.Say("matte", line);
       // The bounds found before from the first mattes (or the sparse points) may cut off what the
       // new mattes hold: the aspen's trunk at 20°, lost below 0.85 of the tree frame.
-      if (!SceneHasTrueBounds(args->dir)) UpdateBoundsFromMattes(args->dir, HullOptions{}, progress);
+      UpdateBoundsFromMattes(args->dir, HullOptions{}, progress);
       return;
     }
     const size_t count = MatteWorkspace(args->dir, args->options, progress);

@@ -167,28 +167,28 @@ void WriteSceneJson(const fs::path& path, const CalibrateReport& report, const s
 
 void UpdateBoundsFromMattes(const fs::path& workspace, const HullOptions& hull, Progress& progress) {
   hull.Check();
-  const ColmapModel model = ReadColmapModel(workspace / "sparse");
-  const Bounds bounds = FindBounds(workspace, model, hull, progress);
-  if (bounds.source == "sparse points") Fail((workspace / "mattes").string(), ": not every photo has a matte");
+  const fs::path scene_path = workspace / "scene.json";
   CalibrateReport report;
-  report.bounds_min = bounds.min;
-  report.bounds_max = bounds.max;
   report.units = "reconstruction";
   std::string source = "colmap";
-  if (fs::exists(workspace / "scene.json")) {
-    const nlohmann::json scene = nlohmann::json::parse(ReadFile(workspace / "scene.json"));
+  if (fs::exists(scene_path)) {
+    const nlohmann::json scene = nlohmann::json::parse(ReadFile(scene_path));
     report.units = scene.value("units", report.units);
     source = scene.value("source", source);
   }
-  WriteSceneJson(workspace / "scene.json", report, source);
-  progress.Say("calibrate",
-               Str("bounds from the mattes' ", bounds.source, " written to ", (workspace / "scene.json").string()));
-}
-
-bool SceneHasTrueBounds(const fs::path& workspace) {
-  const fs::path path = workspace / "scene.json";
-  if (!fs::exists(path)) return false;
-  return nlohmann::json::parse(ReadFile(path)).value("source", std::string()) == "studio";
+  // The studio's bounds are measured on the tree itself; a visual hull could only loosen them (it
+  // reaches below the ground, where no photo sees).
+  if (source == "studio") {
+    progress.Say("calibrate", Str("the bounds in ", scene_path.string(), " are the studio's true ones; kept"));
+    return;
+  }
+  const ColmapModel model = ReadColmapModel(workspace / "sparse");
+  const Bounds bounds = FindBounds(workspace, model, hull, progress);
+  if (bounds.source == "sparse points") Fail((workspace / "mattes").string(), ": not every photo has a matte");
+  report.bounds_min = bounds.min;
+  report.bounds_max = bounds.max;
+  WriteSceneJson(scene_path, report, source);
+  progress.Say("calibrate", Str("bounds from the mattes' ", bounds.source, " written to ", scene_path.string()));
 }
 
 CalibrateReport CalibrateWorkspace(const fs::path& workspace, const CalibrateOptions& options, Progress& progress) {

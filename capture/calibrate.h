@@ -76,12 +76,9 @@ CalibrateReport CalibrateWorkspace(const std::filesystem::path& workspace, const
                                    Progress& progress);
 
 // Recomputes the tree's bounds in DIR/scene.json from DIR/mattes/ and the cameras in DIR/sparse/
-// (already in the tree frame, kept as they are): for mattes made after calibration. Throws Error
-// when the mattes' visual hull is empty.
+// (already in the tree frame, kept as they are): for mattes made after calibration. The studio's
+// bounds (scene.json's source "studio") are true and are kept. Throws Error when the mattes'
+// visual hull is empty.
 void UpdateBoundsFromMattes(const std::filesystem::path& workspace, const HullOptions& hull, Progress& progress);
-
-// Whether DIR/scene.json holds the tree's true bounds (the studio's, measured on the tree itself),
-// which a visual hull could only loosen: it reaches below the ground, where no photo sees.
-bool SceneHasTrueBounds(const std::filesystem::path& workspace);
 
 }  // namespace voltree

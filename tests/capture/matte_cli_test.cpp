@@ -1,6 +1,7 @@
 // `voltree matte` end to end through the command line, on the synthetic scene and on a small
 // photo-studio set (`voltree synth`). Needs the built voltree binary (a full build makes it).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +14,6 @@
 #include "capture/matte/metrics.h"
 #include "capture/matte/workspace.h"
 #include "capture/photo_folder.h"
-#include <nlohmann/json.hpp>
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
