@@ -1,10 +1,10 @@
 #include "capture/matte/backdrop.h"
 
 #include <algorithm>
-#include <numeric>
 #include <opencv2/imgproc.hpp>
 
 #include "capture/matte/cv.h"
+#include "capture/matte/neighbours.h"
 #include "core/error.h"
 
 namespace voltree {
@@ -27,51 +27,6 @@ void BackdropOptions::Check() const {
     FailOption("BackdropOptions.max_difference", "must be in (0, 1), got ", max_difference);
 }
 
-namespace {
-
-// The views nearest to `target` by camera centre, nearest first.
-std::vector<size_t> NearestViews(const std::vector<View>& views, size_t target, int count) {
-  std::vector<size_t> order(views.size());
-  std::iota(order.begin(), order.end(), size_t(0));
-  order.erase(order.begin() + target);
-  const Eigen::Vector3d center = views[target].pose.Center();
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return (views[a].pose.Center() - center).squaredNorm() < (views[b].pose.Center() - center).squaredNorm();
-  });
-  order.resize(std::min(order.size(), size_t(count)));
-  return order;
-}
-
-// Where each pixel of `from` lands in `to` under one hypothesis, as cv::remap maps (pixel centres
-// at integers); -1 where the hypothesis says nothing (the ground above the horizon, behind a camera).
-void HypothesisMaps(const View& from, const View& to, bool ground, double ground_z, cv::Mat* map_x, cv::Mat* map_y) {
-  *map_x = cv::Mat(from.camera.height, from.camera.width, CV_32F, cv::Scalar(-1));
-  *map_y = cv::Mat(from.camera.height, from.camera.width, CV_32F, cv::Scalar(-1));
-  const Eigen::Vector3d from_center = from.pose.Center(), to_center = to.pose.Center();
-  for (int y = 0; y < from.camera.height; ++y)
-    for (int x = 0; x < from.camera.width; ++x) {
-      const Eigen::Vector3d ray = from.PixelRay({x + 0.5, y + 0.5});
-      Eigen::Vector3d point;
-      if (ground) {
-        if (ray.z() > -1e-6) continue;  // never meets the ground
-        const double t = (ground_z - from_center.z()) / ray.z();
-        if (t <= 0) continue;
-        point = from_center + t * ray;
-      } else {
-        // Below the horizon the ground is in the way: nothing there is far. (A little below, for
-        // distant hills; a pixel of leaves the colour of the grass would be explained otherwise.)
-        if (ray.z() < -0.02) continue;
-        point = to_center + ray;  // at infinity only the direction matters
-      }
-      Eigen::Vector2d pixel;
-      if (!to.WorldToPixel(point, &pixel)) continue;
-      map_x->at<float>(y, x) = float(pixel.x() - 0.5);
-      map_y->at<float>(y, x) = float(pixel.y() - 0.5);
-    }
-}
-
-}  // namespace
-
 Image8 ExplainedByBackdrop(const std::vector<View>& views, const std::vector<Image8>& photos,
                            const std::vector<Image8>& mattes, size_t target, const BackdropOptions& options) {
   options.Check();
@@ -79,7 +34,7 @@ Image8 ExplainedByBackdrop(const std::vector<View>& views, const std::vector<Ima
     Fail("backdrop parallax needs one photo per view (", views.size(), " views, ", photos.size(), " photos)");
   const cv::Mat image = matte::ToFloat(photos[target]);
   cv::Mat best(image.size(), CV_32F, cv::Scalar(1e9));
-  for (size_t neighbour : NearestViews(views, target, options.neighbours)) {
+  for (size_t neighbour : matte::NearestViews(views, target, options.neighbours)) {
     const cv::Mat other = matte::ToFloat(photos[neighbour]);
     // Ground the neighbour sees behind its own tree is no ground: the crown seen from above hides
     // the same ground in neighbouring photos, and leaves would match leaves.
@@ -90,7 +45,8 @@ Image8 ExplainedByBackdrop(const std::vector<View>& views, const std::vector<Ima
     }
     for (bool ground : {false, true}) {
       cv::Mat map_x, map_y, warped, valid;
-      HypothesisMaps(views[target], views[neighbour], ground, options.ground_z, &map_x, &map_y);
+      matte::DepthMaps(views[target], views[neighbour], ground ? matte::Depth::kGround : matte::Depth::kFar,
+                       options.ground_z, &map_x, &map_y);
       cv::remap(other, warped, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(-10, -10, -10));
       cv::Mat difference;
       cv::absdiff(image, warped, difference);
@@ -217,7 +173,7 @@ Image8 ExplainedBehindHull(const std::vector<View>& views, const std::vector<Ima
   const View& view = views[target];
   const int r = options.behind_patch_radius;
   std::vector<SweepNeighbour> neighbours;
-  for (size_t n : NearestViews(views, target, options.behind_neighbours)) {
+  for (size_t n : matte::NearestViews(views, target, options.behind_neighbours)) {
     SweepNeighbour neighbour{&views[n], matte::ToFloat(photos[n]), cv::Mat(),
                              views[n].pose.ToCamera(view.pose.Center())};
     // The hull grown by a patch: a patch touching it may hold the tree.

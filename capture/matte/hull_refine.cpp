@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/colmap_binary.h"
+#include "capture/matte/clean_plate.h"
 #include "capture/matte/cv.h"
 #include "capture/matte/foreground.h"
 #include "capture/matte/grabcut.h"
@@ -13,6 +14,7 @@
 #include "capture/matte/narrow_parts.h"
 #include "capture/matte/refine.h"
 #include "capture/matte/sky_estimate.h"
+#include "capture/matte/trunk_foot.h"
 #include "capture/matte/workspace.h"
 #include "core/error.h"
 #include "core/fixed.h"
@@ -38,6 +40,8 @@ void HullRematteOptions::Check() const {
     FailOption("HullRematteOptions.narrow_radius_bands", "must be in [1, 64], got ", narrow_radius_bands);
   if (use_backdrop) backdrop.Check();
   if (matte_mixed_pixels) mixed_pixels.Check();
+  if (use_clean_plate) clean_plate.Check();
+  if (use_clean_plate && carry_trunk_to_ground) trunk_foot.Check();
 }
 
 namespace {
@@ -329,10 +333,18 @@ HullRematteResult RematteFromHull(const std::vector<View>& views, const std::vec
     AppendNew(names, result.rematted);
   }
   if (options.mend_narrow_parts) AppendNew(MendNarrowParts(views, photos, mattes, known, options), result.mended);
+  // Every photo's plate is found from the mattes as they stand, before any is changed again.
+  std::vector<CleanPlate> plates(options.use_clean_plate ? views.size() : 0);
+  tbb::parallel_for(size_t(0), plates.size(), [&](size_t i) {
+    plates[i] = GroundCleanPlate(views, photos, mattes, i, mattes[i], options.clean_plate);
+  });
+  if (options.carry_trunk_to_ground && options.use_clean_plate)
+    result.trunk_carried =
+        CarryTrunkToGround(views, photos, options.matte, options.clean_plate, options.trunk_foot, mattes);
   if (options.matte_mixed_pixels)
     tbb::parallel_for(size_t(0), views.size(), [&](size_t i) {
-      mattes[i] = MatteMixedPixels(photos[i], mattes[i], known.skies[i], known.ClearSky(i), options.matte,
-                                   options.mixed_pixels);
+      mattes[i] = MatteMixedPixels(photos[i], mattes[i], known.skies[i], known.ClearSky(i),
+                                   plates.empty() ? nullptr : &plates[i], options.matte, options.mixed_pixels);
     });
   for (size_t i = 0; i < views.size(); ++i)
     if (mattes[i].pixels != before[i].pixels) result.changed.push_back(views[i].name);
@@ -357,17 +369,21 @@ HullRematteResult RematteWorkspaceFromHull(const fs::path& dir, const HullRematt
     WriteImage(dir / "mattes" / name, mattes[i]);
     WriteImage(dir / "foreground" / name, PremultipliedForeground(photos[i], mattes[i]));
   }
-  progress.Say("matte",
-               Str(result.trusted.size(), " of ", views.size(), " mattes agree through the cameras; ",
-                   result.rematted.empty() ? std::string("none re-matted")
-                                           : Str(result.rematted.size(), " re-matted inside the visual hull ",
-                                                 result.majority_hull ? "all photos agree on by majority" : "of those"),
-                   options.use_backdrop ? "; background told by parallax taken out" : "",
-                   result.mended.empty() ? std::string()
-                                         : Str("; ", result.mended.size(), " missed a trunk or bough the others hold (",
-                                               NameList(result.mended), "), mended"),
-                   options.matte_mixed_pixels ? "; pixels a leaf covers in part matted again" : "", "; ",
-                   result.changed.size(), " mattes changed"));
+  progress.Say(
+      "matte",
+      Str(result.trusted.size(), " of ", views.size(), " mattes agree through the cameras; ",
+          result.rematted.empty() ? std::string("none re-matted")
+                                  : Str(result.rematted.size(), " re-matted inside the visual hull ",
+                                        result.majority_hull ? "all photos agree on by majority" : "of those"),
+          options.use_backdrop ? "; background told by parallax taken out" : "",
+          result.mended.empty() ? std::string()
+                                : Str("; ", result.mended.size(), " missed a trunk or bough the others hold (",
+                                      NameList(result.mended), "), mended"),
+          result.trunk_carried.empty() ? std::string()
+                                       : Str("; the trunk's foot, lost above the ground, carried down to it in ",
+                                             result.trunk_carried.size(), " (", NameList(result.trunk_carried), ")"),
+          options.matte_mixed_pixels ? "; pixels a leaf covers in part matted again" : "", "; ", result.changed.size(),
+          " mattes changed"));
   return result;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "capture/matte/clean_plate.h"
 #include "capture/matte/cv.h"
 #include "capture/matte/refine.h"
 #include "capture/matte/sky_estimate.h"
@@ -19,6 +20,13 @@ void MixedPixelOptions::Check() const {
   if (tree_radius < 1 || tree_radius > 64)
     FailOption("MixedPixelOptions.tree_radius", "must be in [1, 64], got ", tree_radius);
   if (!(pure > 0 && pure <= 1)) FailOption("MixedPixelOptions.pure", "must be in (0, 1], got ", pure);
+  if (!(plate_background >= 0 && plate_background < pure))
+    FailOption("MixedPixelOptions.plate_background", "must be in [0, pure = ", pure, "), got ", plate_background);
+  if (!(plate_match > 0 && plate_match < 1))
+    FailOption("MixedPixelOptions.plate_match", "must be in (0, 1), got ", plate_match);
+  if (!(plate_line >= 0)) FailOption("MixedPixelOptions.plate_line", "must be at least 0, got ", plate_line);
+  if (!(min_plate_spread > 0))
+    FailOption("MixedPixelOptions.min_plate_spread", "must be above 0, got ", min_plate_spread);
 }
 
 namespace matte {
@@ -99,6 +107,34 @@ cv::Mat Purity(const cv::Mat& rgb, const cv::Mat& alpha, const SkyEstimate& sky,
   return purity;
 }
 
+// Alpha (CV_32F) told by the clean plate, where it can be: 0 where a pixel of the tree (`alpha`
+// nonzero) shows the plate (its colour within options.plate_match of it and under
+// options.plate_background of the way to the purest tree colour near it); the share of the way
+// where its colour is a mix of the two (within options.plate_line of the line between them); -1
+// elsewhere, and where the tree's colour stands too near the plate's (min_contrast times its
+// spread). A grey branch in front of brown soil is neither, though far nearer the soil than the
+// yellow leaves are: judged by its purity against them, the branches were lost.
+cv::Mat PlateAlpha(const cv::Mat& rgb, const cv::Mat& alpha, const voltree::CleanPlate& plate,
+                   const MixedPixelOptions& options) {
+  cv::Mat told(rgb.size(), CV_32F, cv::Scalar(-1));
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x) {
+      if (alpha.at<uint8_t>(y, x) == 0 || !plate.Known(x, y)) continue;
+      const cv::Vec3f behind(plate.colour.at(x, y, 0), plate.colour.at(x, y, 1), plate.colour.at(x, y, 2));
+      const cv::Vec3f tree = PurestTreeOffset(rgb, alpha, x, y, behind, options.tree_radius);
+      const double contrast = cv::norm(tree);
+      if (contrast < options.min_contrast * std::max(double(plate.spread.at(x, y)), options.min_plate_spread)) continue;
+      const cv::Vec3f offset = rgb.at<cv::Vec3f>(y, x) - behind;
+      const double share = offset.dot(tree) / (contrast * contrast);
+      const double mean_difference = (std::abs(offset[0]) + std::abs(offset[1]) + std::abs(offset[2])) / 3;
+      if (mean_difference < options.plate_match && share < options.plate_background)
+        told.at<float>(y, x) = 0;
+      else if (options.plate_line > 0 && share > 0 && cv::norm(offset - float(share) * tree) < options.plate_line)
+        told.at<float>(y, x) = float(std::min(share, 1.0));
+    }
+  return told;
+}
+
 }  // namespace
 }  // namespace matte
 
@@ -106,20 +142,27 @@ Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const MatteOpt
                         const MixedPixelOptions& options) {
   const matte::SkyEstimate sky = matte::EstimatePhotoSky(matte::View(photo), matte_options);
   const Image8 clear_sky = matte::ToImage8(sky.ClearSky());
-  return MatteMixedPixels(photo, matte, sky, &clear_sky, matte_options, options);
+  return MatteMixedPixels(photo, matte, sky, &clear_sky, nullptr, matte_options, options);
 }
 
 Image8 MatteMixedPixels(const Image8& photo, const Image8& matte, const matte::SkyEstimate& sky,
-                        const Image8* clear_sky, const MatteOptions& matte_options, const MixedPixelOptions& options) {
+                        const Image8* clear_sky, const CleanPlate* plate, const MatteOptions& matte_options,
+                        const MixedPixelOptions& options) {
   const cv::Mat rgb8 = matte::View(photo), alpha = matte::View(matte);
   const cv::Mat rgb = matte::ToFloat(photo);
   const cv::Mat purity = matte::Purity(rgb, alpha, sky, options);
   // Purity -1 (background unknown): the pixel stays what the matte said.
-  const cv::Mat whole = (alpha >= options.pure * 255) & ((purity >= options.pure) | (purity < 0));
+  const cv::Mat plate_alpha =
+      plate != nullptr ? matte::PlateAlpha(rgb, alpha, *plate, options) : cv::Mat(alpha.size(), CV_32F, cv::Scalar(-1));
+  // The plate's word on a mixed pixel overrules the matte's whole.
+  const cv::Mat whole = (alpha >= options.pure * 255) & ((purity >= options.pure) | (purity < 0)) &
+                        ((plate_alpha < 0) | (plate_alpha >= options.pure));
   cv::Mat trimap(alpha.size(), CV_8U, cv::Scalar(128));
   trimap.setTo(255, whole);
   trimap.setTo(0, alpha == 0);
   if (clear_sky != nullptr) trimap.setTo(0, matte::View(*clear_sky) != 0);
+  // Where the clean plate is known, a pixel that shows it is background, whatever the matte said.
+  trimap.setTo(0, plate_alpha == 0);
   cv::Mat estimate;
   alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
   estimate.setTo(0.0f, trimap == 0);

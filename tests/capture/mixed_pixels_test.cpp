@@ -68,7 +68,7 @@ TEST(MatteMixedPixels, KeepsTheClearSkyBackgroundOnlyWhenAsked) {
   ASSERT_GT(cv::countNonZero(clear_sky), 0);
   const Image8 known_sky = matte::ToImage8(clear_sky);
   auto clear_sky_with_alpha = [&](bool keep_clear_sky) {
-    const Image8 mixed = MatteMixedPixels(set.photos[0], matte, sky, keep_clear_sky ? &known_sky : nullptr,
+    const Image8 mixed = MatteMixedPixels(set.photos[0], matte, sky, keep_clear_sky ? &known_sky : nullptr, nullptr,
                                           MatteOptions{}, MixedPixelOptions{});
     return cv::countNonZero(clear_sky & (matte::View(mixed) > 0));
   };
