@@ -30,9 +30,9 @@ struct GroundSample {
 };
 
 GroundSample SampleGround(const voltree::View& target, const voltree::View& neighbour, const Image8& photo,
-                          const Image8& matte, const CleanPlateOptions& options) {
+                          const Image8& matte, cv::Rect roi, const CleanPlateOptions& options) {
   cv::Mat map_x, map_y;
-  DepthMaps(target, neighbour, Depth::kGround, options.ground_z, &map_x, &map_y);
+  DepthMaps(target, neighbour, Depth::kGround, options.ground_z, &map_x, &map_y, roi);
   GroundSample sample;
   cv::remap(ToFloat(photo), sample.colour, map_x, map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
             cv::Scalar(-10, -10, -10));
@@ -82,13 +82,16 @@ CleanPlate GroundCleanPlate(const std::vector<View>& views, const std::vector<Im
   if (views.size() != photos.size() || views.size() != mattes.size() || target >= views.size())
     Fail("the clean plate needs one photo and one matte per view (", views.size(), " views, ", photos.size(),
          " photos, ", mattes.size(), " mattes)");
-  std::vector<matte::GroundSample> samples;
-  for (size_t n : matte::NearestViews(views, target, options.neighbours))
-    samples.push_back(matte::SampleGround(views[target], views[n], photos[n], mattes[n], options));
   if (region.width != mattes[target].width || region.height != mattes[target].height)
     Fail("the clean plate's region is ", region.width, "x", region.height, ", its photo ", mattes[target].width, "x",
          mattes[target].height);
   CleanPlate plate{ImageF(region.width, region.height, 3, 0.0f), ImageF(region.width, region.height, 1, -1.0f)};
+  // Rays are cast only for the region's pixels: the trunk's foot asks for a few lines.
+  const cv::Rect roi = cv::boundingRect(matte::View(region));
+  if (roi.empty()) return plate;
+  std::vector<matte::GroundSample> samples;
+  for (size_t n : matte::NearestViews(views, target, options.neighbours))
+    samples.push_back(matte::SampleGround(views[target], views[n], photos[n], mattes[n], roi, options));
   std::vector<cv::Vec3f> seen;
   for (int y = 0; y < region.height; ++y)
     for (int x = 0; x < region.width; ++x) {

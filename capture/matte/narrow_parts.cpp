@@ -15,6 +15,22 @@ cv::Mat NarrowParts(const cv::Mat& inside, int radius) {
   return (inside != 0) & (wide == 0);
 }
 
+void SolveAgainInside(const cv::Mat& rgb, const cv::Mat& region, const cv::Mat& tree, const cv::Mat& background,
+                      const MatteOptions& options, cv::Mat& alpha) {
+  cv::Mat trimap(alpha.size(), CV_8UC1, cv::Scalar(128));
+  trimap.setTo(0, alpha == 0);
+  trimap.setTo(255, alpha == 255);
+  trimap.setTo(128, region & (alpha < 255));
+  trimap.setTo(255, tree);
+  if (!background.empty()) trimap.setTo(0, background);
+  cv::Mat estimate;
+  alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
+  estimate.setTo(1.0f, trimap == 255);
+  estimate.setTo(0.0f, trimap == 0);
+  const cv::Mat solved = AlphaTo8(RefineAlpha(rgb, estimate, trimap, region & (trimap == 128), options));
+  solved.copyTo(alpha, region);
+}
+
 bool MendMissedNarrowParts(const cv::Mat& rgb, const cv::Mat& inside, const cv::Mat& background,
                            const NarrowPartMend& mend, const MatteOptions& options, cv::Mat& alpha) {
   cv::Mat parts;
@@ -42,21 +58,8 @@ bool MendMissedNarrowParts(const cv::Mat& rgb, const cv::Mat& inside, const cv::
       any = true;
     }
   if (!any) return false;
-  // Outside the mended parts the matte is known where it is sure (context for the solver) and
-  // kept as it is.
-  cv::Mat trimap(alpha.size(), CV_8UC1, cv::Scalar(128));
-  trimap.setTo(0, alpha == 0);
-  trimap.setTo(255, alpha == 255);
-  trimap.setTo(128, mended & (alpha < 255));
-  trimap.setTo(255, mended & missed);
-  if (!background.empty()) trimap.setTo(0, mended & (background != 0));
-  cv::Mat estimate;
-  alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
-  estimate.setTo(1.0f, trimap == 255);
-  estimate.setTo(0.0f, trimap == 0);
-  const cv::Mat solve = mended & (trimap == 128);
-  const cv::Mat solved = AlphaTo8(RefineAlpha(rgb, estimate, trimap, solve, options));
-  solved.copyTo(alpha, mended);
+  SolveAgainInside(rgb, mended, mended & missed, background.empty() ? background : mended & (background != 0), options,
+                   alpha);
   return true;
 }
 

@@ -22,6 +22,12 @@ struct NarrowPartMend {
   int carve_alpha = 5;
 };
 
+// Solves `alpha` (CV_8U) again inside `region`: `tree` known tree and `background` (may be empty)
+// known background there, the rest of the region decided by the solver from the photo's colours.
+// Outside the region the matte is kept, and serves as the solver's context where it is sure.
+void SolveAgainInside(const cv::Mat& rgb, const cv::Mat& region, const cv::Mat& tree, const cv::Mat& background,
+                      const MatteOptions& options, cv::Mat& alpha);
+
 // One eye-level photo of the aspen, matted from GrabCut's cut alone, took its grey trunk for the
 // grey soil, and its matte alone then carved the trunk out of the volume in every view. Each
 // narrow part whose centre line `alpha` (CV_8U) misses beyond `max_missed`, over at least twice

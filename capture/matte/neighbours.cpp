@@ -18,12 +18,14 @@ std::vector<size_t> NearestViews(const std::vector<voltree::View>& views, size_t
 }
 
 void DepthMaps(const voltree::View& from, const voltree::View& to, Depth depth, double ground_z, cv::Mat* map_x,
-               cv::Mat* map_y) {
+               cv::Mat* map_y, cv::Rect roi) {
   *map_x = cv::Mat(from.camera.height, from.camera.width, CV_32F, cv::Scalar(-1));
   *map_y = cv::Mat(from.camera.height, from.camera.width, CV_32F, cv::Scalar(-1));
+  const cv::Rect image(0, 0, from.camera.width, from.camera.height);
+  roi = roi.empty() ? image : roi & image;
   const Eigen::Vector3d from_center = from.pose.Center(), to_center = to.pose.Center();
-  for (int y = 0; y < from.camera.height; ++y)
-    for (int x = 0; x < from.camera.width; ++x) {
+  for (int y = roi.y; y < roi.y + roi.height; ++y)
+    for (int x = roi.x; x < roi.x + roi.width; ++x) {
       const Eigen::Vector3d ray = from.PixelRay({x + 0.5, y + 0.5});
       Eigen::Vector3d point;
       if (depth == Depth::kGround) {

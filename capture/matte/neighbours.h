@@ -18,8 +18,9 @@ enum class Depth { kFar, kGround };
 
 // Where each pixel of `from` lands in `to` under `depth`, as cv::remap maps (CV_32F, pixel centres
 // at integers); -1 where the hypothesis says nothing (the ground above the horizon, a point
-// behind the camera, the far backdrop well below the horizon, where the ground is in the way).
+// behind the camera, the far backdrop well below the horizon, where the ground is in the way)
+// and outside `roi` (the whole image when empty: a caller that needs a few pixels pays for those).
 void DepthMaps(const voltree::View& from, const voltree::View& to, Depth depth, double ground_z, cv::Mat* map_x,
-               cv::Mat* map_y);
+               cv::Mat* map_y, cv::Rect roi = {});
 
 }  // namespace voltree::matte

@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/matte/cv.h"
-#include "capture/matte/refine.h"
+#include "capture/matte/narrow_parts.h"
 #include "core/error.h"
 
 namespace voltree {
@@ -89,17 +89,7 @@ void MendStretch(const cv::Mat& rgb, const std::vector<cv::Point>& line, int hal
   cv::Mat centre = cv::Mat::zeros(alpha.size(), CV_8UC1), band;
   for (const cv::Point& p : line) centre.at<uint8_t>(p) = 255;
   cv::dilate(centre, band, matte::Disc(half_width));
-  cv::Mat trimap(alpha.size(), CV_8UC1, cv::Scalar(128));
-  trimap.setTo(0, alpha == 0);
-  trimap.setTo(255, alpha == 255);
-  trimap.setTo(128, band & (alpha < 255));
-  trimap.setTo(255, centre);
-  cv::Mat estimate;
-  alpha.convertTo(estimate, CV_32F, 1.0 / 255.0);
-  estimate.setTo(1.0f, trimap == 255);
-  const cv::Mat solved =
-      matte::AlphaTo8(matte::RefineAlpha(rgb, estimate, trimap, band & (trimap == 128), matte_options));
-  solved.copyTo(alpha, band);
+  matte::SolveAgainInside(rgb, band, centre, cv::Mat(), matte_options, alpha);
 }
 
 // Two voxels either side of the centre line at the foot, in pixels of this photo: the foot found
