@@ -75,10 +75,10 @@ std::vector<OptionSpec> CalibrateFlags() {
        {"CalibrateOptions.matcher"},
        "COLMAP matcher: exhaustive, or sequential for photos taken in order along a walk"},
       {"--min-registered", {"CalibrateOptions.min_registered"}, "Fraction of the photos that must get a camera"},
-      {"--refine-rounds",
-       {"ModelRefinementOptions.rounds"},
-       "After COLMAP's mapper: rounds of dropping the points whose reprojection error exceeds 1.5 times the mean, "
-       "then bundle adjustment (0: keep the mapper's model)"},
+      {"--robust-loss",
+       {"RobustAdjustOptions.loss_scale"},
+       "After COLMAP's mapper: bundle adjustment under a Cauchy loss of this scale in pixels, so that "
+       "observations on leaf edges and crossing branches do not pull the cameras (0: keep the mapper's model)"},
       {"--mask",
        {"CalibrateOptions.mask"},
        "Where features may come from when mattes/ exists: all (ground and surroundings help), tree (the tree "

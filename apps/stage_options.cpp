@@ -55,7 +55,7 @@ void AddCalibrateOptions(CLI::App& command, CalibrateOptions& calibrate) {
   AddOption(command, "--max-features", calibrate.max_features);
   AddOption(command, "--matcher", calibrate.matcher);
   AddOption(command, "--min-registered", calibrate.min_registered);
-  AddOption(command, "--refine-rounds", calibrate.refine.rounds);
+  AddOption(command, "--robust-loss", calibrate.adjust.loss_scale);
   AddChoice(command, "--mask", calibrate.mask,
             {{"all", FeatureMask::kAll}, {"tree", FeatureMask::kTree}, {"near", FeatureMask::kNear}});
   AddParsedOption<std::optional<Eigen::Vector3d>>(

@@ -37,7 +37,7 @@ void CalibrateOptions::Check() const {
     FailOption("CalibrateOptions.min_pose_inliers", "must be at least 6, got ", min_pose_inliers);
   if (matcher != "exhaustive" && matcher != "sequential")
     FailOption("CalibrateOptions.matcher", "must be exhaustive or sequential, got '", matcher, "'");
-  refine.Check();
+  adjust.Check();
   if (!(min_registered >= 0 && min_registered <= 1))
     FailOption("CalibrateOptions.min_registered", "must be in [0, 1], got ", min_registered);
   if (!(near_band > 0 && near_band < 1)) FailOption("CalibrateOptions.near_band", "must be in (0, 1), got ", near_band);

@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "capture/colmap_refine.h"
+#include "capture/bundle_adjust.h"
 #include "capture/normalize_hull.h"
 #include "core/colmap_model.h"
 #include "core/progress.h"
@@ -45,9 +45,8 @@ struct CalibrateOptions {
   // inliers. At 256² a 5-degree photo sometimes had fewer than 30 and stayed out (23 of 24, one
   // run in three of the photos-alone test; COLMAP's threads make runs differ).
   int min_pose_inliers = 15;
-  // After mapping (capture/colmap_refine.h). Its two rounds took the eye-level ring's worst
-  // rotation error from 0.18 to 0.09-0.11 degrees (oak, 24 photos at 512², realistic backdrop).
-  ModelRefinementOptions refine;
+  // After mapping, bundle adjustment under a robust loss (capture/bundle_adjust.h).
+  RobustAdjustOptions adjust;
   double min_registered = 0.8;  // fraction of the photos that must register
   FeatureMask mask = FeatureMask::kAll;
   double near_band = 0.15;              // kNear: band width as a fraction of the image diagonal

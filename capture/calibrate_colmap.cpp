@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/colmap_binary.h"
-#include "capture/colmap_refine.h"
+#include "capture/bundle_adjust.h"
 #include "capture/colmap_runner.h"
 #include "capture/photo_folder.h"
 #include "core/error.h"
@@ -153,17 +153,23 @@ ColmapSfmResult RunColmapSfm(const fs::path& workspace, const fs::path& colmap_f
   if (result.models_found > 1)
     progress.Say("calibrate", Str("COLMAP made ", result.models_found, " separate models; keeping the largest, ",
                                   result.model_folder.string(), " (", best_size, " photos)"));
-  if (options.refine.rounds > 0) {
-    ModelRefinementOptions refine = options.refine;
-    refine.keep_intrinsics = refine.keep_intrinsics || !options.camera_params.empty();
-    RefinedModel refined =
-        RefineColmapModel(colmap, result.model_folder, result.model, colmap_folder / "refined", refine, progress);
-    result.stage_seconds.emplace_back("refine", refined.seconds);
-    result.model = std::move(refined.model);
-    result.model_folder = refined.folder;
+  RobustAdjustOptions adjust = options.adjust;
+  adjust.keep_intrinsics = adjust.keep_intrinsics || !options.camera_params.empty();
+  const RobustAdjustReport adjusted = AdjustBundleRobustly(result.model, adjust);
+  result.stage_seconds.emplace_back("adjust", adjusted.seconds);
+  if (adjusted.adjusted) {
+    progress.Say("calibrate",
+                 Str("robust bundle adjustment: mean error ", std::round(adjusted.error_before * 1000) / 1000, " -> ",
+                     std::round(adjusted.error_after * 1000) / 1000, " px, ", adjusted.observations_after, " of ",
+                     adjusted.observations_before, " observations within ", adjust.max_error, " px kept (",
+                     adjusted.iterations, " iterations, ", std::round(adjusted.seconds * 10) / 10, " s)"));
+    result.model_folder = colmap_folder / "adjusted";
+    WriteColmapText(result.model_folder, result.model);
+  } else {
+    if (adjust.loss_scale > 0) progress.Say("calibrate", Str("robust bundle adjustment skipped: ", adjusted.note));
+    stage("model_converter", {"--input_path", result.model_folder.string(), "--output_path",
+                              result.model_folder.string(), "--output_type", "TXT"});
   }
-  stage("model_converter", {"--input_path", result.model_folder.string(), "--output_path", result.model_folder.string(),
-                            "--output_type", "TXT"});
   return result;
 }
 

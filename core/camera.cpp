@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/camera_projection.h"
 #include "core/error.h"
 
 namespace voltree {
@@ -26,10 +27,6 @@ const ModelInfo& Info(CameraModel model) {
   for (const ModelInfo& info : kModels)
     if (info.model == model) return info;
   Fail("unknown camera model enum value ", static_cast<int>(model));
-}
-
-bool SingleFocal(CameraModel model) {
-  return model == CameraModel::kSimplePinhole || model == CameraModel::kSimpleRadial || model == CameraModel::kRadial;
 }
 
 }  // namespace
@@ -57,39 +54,21 @@ void Camera::Check() const {
 }
 
 double Camera::FocalX() const { return params.at(0); }
-double Camera::FocalY() const { return SingleFocal(model) ? params.at(0) : params.at(1); }
+double Camera::FocalY() const { return HasSingleFocal(model) ? params.at(0) : params.at(1); }
 
 Eigen::Vector2d Camera::PrincipalPoint() const {
-  return SingleFocal(model) ? Eigen::Vector2d(params.at(1), params.at(2)) : Eigen::Vector2d(params.at(2), params.at(3));
+  return HasSingleFocal(model) ? Eigen::Vector2d(params.at(1), params.at(2))
+                               : Eigen::Vector2d(params.at(2), params.at(3));
 }
 
 bool Camera::HasDistortion() const {
-  const int first = SingleFocal(model) ? 3 : 4;
+  const int first = HasSingleFocal(model) ? 3 : 4;
   for (size_t i = first; i < params.size(); ++i)
     if (params[i] != 0.0) return true;
   return false;
 }
 
-Eigen::Vector2d Camera::Distort(const Eigen::Vector2d& n) const {
-  const double u = n.x(), v = n.y();
-  const double r2 = u * u + v * v;
-  switch (model) {
-    case CameraModel::kSimplePinhole:
-    case CameraModel::kPinhole:
-      return n;
-    case CameraModel::kSimpleRadial:
-      return n * (1.0 + params[3] * r2);
-    case CameraModel::kRadial:
-      return n * (1.0 + params[3] * r2 + params[4] * r2 * r2);
-    case CameraModel::kOpenCV: {
-      const double k1 = params[4], k2 = params[5], p1 = params[6], p2 = params[7];
-      const double radial = 1.0 + k1 * r2 + k2 * r2 * r2;
-      const double uv = u * v;
-      return {u * radial + 2 * p1 * uv + p2 * (r2 + 2 * u * u), v * radial + 2 * p2 * uv + p1 * (r2 + 2 * v * v)};
-    }
-  }
-  return n;
-}
+Eigen::Vector2d Camera::Distort(const Eigen::Vector2d& n) const { return DistortNormalized(model, params.data(), n); }
 
 Eigen::Vector2d Camera::Undistort(const Eigen::Vector2d& distorted) const {
   if (!HasDistortion()) return distorted;
@@ -108,11 +87,7 @@ Eigen::Vector2d Camera::Undistort(const Eigen::Vector2d& distorted) const {
   return x;
 }
 
-Eigen::Vector2d Camera::Project(const Eigen::Vector3d& p) const {
-  const Eigen::Vector2d distorted = Distort(Eigen::Vector2d(p.x() / p.z(), p.y() / p.z()));
-  const Eigen::Vector2d c = PrincipalPoint();
-  return {FocalX() * distorted.x() + c.x(), FocalY() * distorted.y() + c.y()};
-}
+Eigen::Vector2d Camera::Project(const Eigen::Vector3d& p) const { return ProjectToPixel(model, params.data(), p); }
 
 Eigen::Vector3d Camera::Unproject(const Eigen::Vector2d& pixel) const {
   const Eigen::Vector2d c = PrincipalPoint();
