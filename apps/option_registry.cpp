@@ -145,7 +145,10 @@ std::vector<OptionSpec> ReconstructFlags() {
       {"--solver",
        {"OpacityOptions.solver"},
        "Opacity solver: sart (streamed SART) or ceres (bounded least squares, small volumes only)"},
-      {"--iterations", {"SartOptions.iterations"}, "SART iterations per level"},
+      {"--iterations",
+       {"SartOptions.iterations"},
+       "SART iterations per level (150 runs to convergence: fewer leave sigma spread over cells the photos leave "
+       "empty)"},
       {"--relaxation", {"SartOptions.relaxation"}, "SART relaxation lambda, in (0, 2)"},
       {"--ceres-iterations", {"CeresSolveOptions.iterations"}, "Ceres iterations per level (--solver ceres)"},
       {"--huber",
@@ -192,7 +195,7 @@ std::vector<OptionSpec> CompressFlags() {
       {"--max-bytes",
        {"CompressOptions.max_bytes"},
        "Budget of the asset on disk, e.g. 1MiB or 500KiB (0: none): both codebooks are halved, down to 64, "
-       "until it fits (the demo oak: 64 / 64; new viewpoints barely tell 64 from 512 on a dense tree, its input "
+       "until it fits (the demo oak: 128 / 128; new viewpoints barely tell 64 from 512 on a dense tree, its input "
        "views do)"},
       {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
       {"--gla",

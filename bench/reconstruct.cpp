@@ -17,6 +17,7 @@
 #include "reconstruct/dda.h"
 #include "reconstruct/reconstruct.h"
 #include "reconstruct/reconstruct_workspace.h"
+#include "reconstruct/sart.h"
 
 namespace {
 using namespace voltree;
@@ -137,7 +138,7 @@ Row RunForked(const std::string& workspace, const ReconstructOptions& options, i
 int main(int argc, char** argv) {
   CLI::App app{"Benchmark of voltree reconstruct: one forked run per configuration"};
   std::string workspace;
-  int levels = 7, trigrid_levels = 5, iterations = 30, texels = 4, size = 256;
+  int levels = 7, trigrid_levels = 5, iterations = SartOptions{}.iterations, texels = 4, size = 256;
   std::vector<int> threads = {1, 2};
   app.add_option("--workspace", workspace, "Capture workspace (default: a synthetic phantom)");
   app.add_option("--levels", levels, "Octree levels")->capture_default_str();
