@@ -12,10 +12,11 @@
 namespace voltree::app {
 namespace {
 
-// GLA cannot make more codewords than there are distinct billboards; say so rather than leave the
-// user to find a smaller codebook in `voltree info`.
-void WarnIfCodebookSmaller(const char* option, int asked, size_t made) {
-  if (made < size_t(asked))
+// GLA cannot make more codewords than there are distinct billboards; when the user asked for a
+// size, say so rather than leave them to find a smaller codebook in `voltree info`. The default is
+// only the largest size tried, so a small volume falling short of it is no news.
+void WarnIfCodebookSmaller(const CLI::App& command, const char* option, int asked, size_t made) {
+  if (command.get_option(option)->count() > 0 && made < size_t(asked))
     std::fprintf(stderr,
                  "voltree: warning: %s %d: the codebook has only %zu codewords; the volume's billboards give no "
                  "more distinct ones\n",
@@ -40,11 +41,11 @@ void AddCompressCommand(CLI::App& app) {
   AddCompressOptions(*command, args->options.compress);
   AddFlag(*command, "--force", args->options.force, "Overwrite an existing output file");
   AddFlag(*command, "--quiet", args->quiet);
-  command->callback([args] {
+  command->callback([command, args] {
     Progress progress(args->quiet);
     const CompressWorkspaceResult result = CompressWorkspace(args->dir, args->options, progress);
-    WarnIfCodebookSmaller("--codebook", result.kept.colour_codebook, result.stats.colour.codebook.size());
-    WarnIfCodebookSmaller("--alpha-codebook", result.kept.alpha_codebook, result.stats.alpha.codebook.size());
+    WarnIfCodebookSmaller(*command, "--codebook", result.kept.colour_codebook, result.stats.colour.codebook.size());
+    WarnIfCodebookSmaller(*command, "--alpha-codebook", result.kept.alpha_codebook, result.stats.alpha.codebook.size());
     if (!result.within_budget && args->quiet)  // else the progress lines already said it
       std::fprintf(stderr,
                    "voltree: warning: %s is %llu bytes, over --max-bytes %llu even with codebooks %d / %d; "

@@ -195,8 +195,8 @@ std::vector<OptionSpec> CompressFlags() {
       {"--max-bytes",
        {"CompressOptions.max_bytes"},
        "Budget of the asset on disk, e.g. 1MiB or 500KiB (0: none): both codebooks are halved, down to 64, "
-       "until it fits (the demo oak: 128 / 128; new viewpoints barely tell 64 from 512 on a dense tree, its input "
-       "views do)"},
+       "until it fits (the demo oak: 128 / 128, a sparse tree 2048 / 2048; new viewpoints barely tell 64 from 512 on "
+       "a dense tree, its input views do)"},
       {"--space", {"CompressOptions.space"}, "Colour space of the colour codebook: lab or rgb"},
       {"--gla",
        {"CompressOptions.rule"},

@@ -3,8 +3,9 @@
 // The codeword indices are most of an asset's bytes (a few bits per billboard, hundreds of
 // thousands of billboards), so the budget is met by halving both codebooks until the serialized
 // asset fits. New viewpoints barely tell 64 codewords from 512 on a dense tree, the input views
-// and sparse trees do: the codebooks stay as large as the budget allows, and a small tree keeps
-// the full size.
+// and sparse trees do (2048 against 512: +1.1 to +1.4 dB alpha at the input views of the pine,
+// the young oak and the aspen): the codebooks stay as large as the budget allows, and a small
+// tree keeps the full size.
 #pragma once
 
 #include <cstdint>

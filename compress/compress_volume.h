@@ -17,8 +17,10 @@
 namespace voltree {
 
 struct CompressOptions {
-  int colour_codebook = 512;  // Linz 2006 uses 512 (1024 for a low-contrast tree); the largest tried
-  int alpha_codebook = 512;   // under max_bytes (compress/byte_budget.h)
+  // The largest codebooks tried under max_bytes (compress/byte_budget.h). Linz 2006 uses 512
+  // (1024 for a low-contrast tree); a sparse tree fits 2048 in 1 MiB, and its input views show it.
+  int colour_codebook = 2048;
+  int alpha_codebook = 2048;
   ColourSpace space = ColourSpace::kLab;
   CodewordRule rule = CodewordRule::kClosestMember;
   bool alpha_weighted = false;  // weight colour distances by texel alpha
