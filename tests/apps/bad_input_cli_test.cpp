@@ -333,5 +333,23 @@ TEST(BadInputTable, ReadmeTableMatchesTheCases) {
       << ReadmeTable();
 }
 
+// The default codebook size is only the largest the byte budget tries: a volume with fewer
+// distinct billboards than that is no news, while the same shortfall of a size asked for is
+// (the case above).
+TEST(CodebookWarning, OnlyForASizeTheUserAskedFor) {
+  if (!fs::exists(VOLTREE_BINARY)) GTEST_SKIP() << VOLTREE_BINARY << " is not built (build the voltree target)";
+  const fs::path dir = fs::temp_directory_path() / Str("voltree_codebook_warning_", ::getpid());
+  fs::remove_all(dir);
+  MakeTinyDemo(dir / "ws");
+  const test::Outcome by_default = RunVoltree("compress ws -o default.vtree --quiet", dir);
+  EXPECT_EQ(by_default.status, 0) << by_default.output;
+  EXPECT_EQ(by_default.output.find("warning"), std::string::npos) << by_default.output;
+  const test::Outcome asked = RunVoltree("compress ws --alpha-codebook 4096 -o asked.vtree --quiet", dir);
+  EXPECT_EQ(asked.status, 0) << asked.output;
+  EXPECT_NE(asked.output.find("--alpha-codebook 4096: the codebook has only"), std::string::npos) << asked.output;
+  EXPECT_EQ(asked.output.find("--codebook 2048"), std::string::npos) << asked.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace voltree
