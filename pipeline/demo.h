@@ -18,10 +18,10 @@ namespace voltree {
 
 struct DemoOptions {
   std::filesystem::path output = "out/demo";
-  TreeSource tree;                 // default: the built-in oak, seed 1
-  StudioOptions studio;            // default: 24 views on 2 rings + 8 held out, 512x512
-  ReconstructOptions reconstruct;  // default: 7 octree levels, 4x4 texels
-  CompressOptions compress;  // default: at most 2048 colour and alpha codewords (the byte budget), CIELab, modified GLA
+  TreeSource tree;                            // default: the built-in oak, seed 1
+  StudioOptions studio;                       // default: 24 views on 2 rings + 8 held out, 512x512
+  ReconstructOptions reconstruct;             // default: 7 octree levels, 4x4 texels
+  CompressOptions compress;                   // default: up to 2048 codewords each (byte budget), CIELab, modified GLA
   OrbitFramesOptions orbit = DefaultOrbit();  // 24 frames at 512x512 into report/orbit/; frames 0: none
   bool evaluate = true;                       // report/metrics.json and report/index.html
   EvaluateOptions evaluation;                 // its workspace, report and label are set by RunDemo
