@@ -36,6 +36,10 @@ std::string FlagForField(std::string_view field);
 // A library OptionError as the command line says it: the flag instead of the field.
 std::string DescribeOptionError(const OptionError& error);
 
+// What to type instead of a flag that voltree no longer takes (a default that became the only
+// behaviour, a flag turned around); empty when `argument` is not one.
+std::string RetiredFlagAdvice(std::string_view argument);
+
 // A registered option bound to `value`; its current value is shown as the default.
 template <typename T>
 CLI::Option* AddOption(CLI::App& command, std::string_view flag, T& value) {

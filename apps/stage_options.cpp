@@ -123,7 +123,7 @@ void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
   AddChoice(command, "--space", compress.space, {{"lab", ColourSpace::kLab}, {"rgb", ColourSpace::kRgb}});
   AddChoice(command, "--gla", compress.rule,
             {{"modified", CodewordRule::kClosestMember}, {"classic", CodewordRule::kCentroid}});
-  AddFlag(command, "--alpha-weighted", compress.alpha_weighted);
+  AddFlag(command, "--no-alpha-weighted", compress.alpha_weighted);
   AddOption(command, "--gla-tolerance", compress.tolerance);
   AddOption(command, "--gla-iterations", compress.max_iterations);
   AddOption(command, "--gla-seed", compress.seed);

@@ -48,6 +48,11 @@ int RunVoltree(int argc, char** argv) {
   try {
     app->parse(argc, argv);
   } catch (const CLI::ParseError& error) {
+    for (int i = 1; i < argc; ++i)
+      if (const std::string advice = RetiredFlagAdvice(argv[i]); !advice.empty()) {
+        say("error", advice);
+        return 1;
+      }
     return app->exit(error);
   } catch (const OptionError& error) {  // a field's name is the library's; the user typed a flag
     say("error", HideStagingNames(DescribeOptionError(error)));

@@ -144,8 +144,10 @@ int main(int argc, char** argv) {
       const uint64_t raw_file = SerializeAsset(result.asset).size();
       const uint64_t zstd_file = SerializeAsset(result.asset, zstd).size();
       const AssetBytes bytes = CountAssetBytes(result.asset, raw_file);
-      std::printf("\nDefault compress (codebook %d / %d, lab, modified GLA): %.1f s, PSNR %.2f dB VQ, %.2f dB DXT5\n",
-                  defaults.colour_codebook, defaults.alpha_codebook, compress_seconds, result.stats.psnr_vq,
+      std::printf("\nDefault compress (codebook %d / %d, %s, %s GLA%s): %.1f s, PSNR %.2f dB VQ, %.2f dB DXT5\n",
+                  defaults.colour_codebook, defaults.alpha_codebook,
+                  defaults.space == ColourSpace::kLab ? "lab" : "rgb", CodewordRuleName(defaults.rule).c_str(),
+                  defaults.alpha_weighted ? ", alpha-weighted" : "", compress_seconds, result.stats.psnr_vq,
                   result.stats.psnr_dxt5);
       std::printf("%s", DescribeAsset(result.asset, bytes).c_str());
       std::printf("  on disk with --zstd          %llu bytes\n", static_cast<unsigned long long>(zstd_file));

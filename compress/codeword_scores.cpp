@@ -116,8 +116,12 @@ __attribute__((target("avx2,fma"))) size_t ShortlistAvx2(const float* row, size_
 
 }  // namespace
 
-CodewordScorer::CodewordScorer(const Codebook& codebook, bool use_simd)
-    : dimension_(codebook.dimension), size_(codebook.size()), avx2_(use_simd && CpuHasAvx2Fma()) {
+CodewordScorer::CodewordScorer(const Codebook& codebook, Distance distance, bool use_simd)
+    : dimension_(codebook.dimension),
+      product_dimension_(distance == Distance::kWeighted ? 2 * codebook.dimension : codebook.dimension),
+      weighted_(distance == Distance::kWeighted),
+      size_(codebook.size()),
+      avx2_(use_simd && CpuHasAvx2Fma()) {
   const int d = dimension_;
   std::vector<double> sum(d, 0);
   for (size_t j = 0; j < size_; ++j)
@@ -125,38 +129,65 @@ CodewordScorer::CodewordScorer(const Codebook& codebook, bool use_simd)
   mean_.resize(d);
   for (int t = 0; t < d; ++t) mean_[t] = size_ ? static_cast<float>(sum[t] / double(size_)) : 0.f;
   const size_t padded = (size_ + kPanel - 1) / kPanel * kPanel;
-  panels_.assign(padded * d, 0.f);
+  panels_.assign(padded * product_dimension_, 0.f);
   norms2_.assign(padded, std::numeric_limits<float>::infinity());
   for (size_t j = 0; j < size_; ++j) {
-    float* column = panels_.data() + (j / kPanel) * d * kPanel + j % kPanel;
+    float* column = panels_.data() + (j / kPanel) * product_dimension_ * kPanel + j % kPanel;
     double norm2 = 0;
     for (int t = 0; t < d; ++t) {
       const float centred = codebook.Codeword(j)[t] - mean_[t];
-      column[t * kPanel] = centred;
+      if (weighted_) {
+        column[t * kPanel] = -0.5f * centred * centred;
+        column[(d + t) * kPanel] = centred;
+      } else {
+        column[t * kPanel] = centred;
+      }
       norm2 += double(centred) * centred;
     }
-    norms2_[j] = static_cast<float>(norm2);
+    norms2_[j] = weighted_ ? 0.f : static_cast<float>(norm2);
     max_norm_ = std::max(max_norm_, static_cast<float>(std::sqrt(norm2)));
   }
 }
 
-void CodewordScorer::Score(const float* vectors, int count, float* scores, float* centred_norm2, float* lowest) const {
+void CodewordScorer::CentreRows(const float* vectors, const float* weights, int count, float* rows,
+                                float* tolerance) const {
   const int d = dimension_;
-  float rows[kBlock * 64];
-  std::vector<float> large_rows;  // dimensions above 64 (not used by voltree's 16 and 48)
-  float* centred = rows;
-  if (d > 64) large_rows.resize(size_t(kBlock) * d), centred = large_rows.data();
-  std::fill_n(centred, size_t(kBlock) * d, 0.f);
+  std::fill_n(rows, size_t(kBlock) * product_dimension_, 0.f);
   for (int r = 0; r < count; ++r) {
+    float* row = rows + size_t(r) * product_dimension_;
     double norm2 = 0;
+    float largest_weight = 1;
+    if (weighted_) largest_weight = *std::max_element(weights + size_t(r) * d, weights + size_t(r + 1) * d);
     for (int t = 0; t < d; ++t) {
       const float value = vectors[size_t(r) * d + t] - mean_[t];
-      centred[r * d + t] = value;
+      if (weighted_) {
+        const float weight = weights[size_t(r) * d + t];
+        row[t] = weight;
+        row[d + t] = weight * value;
+      } else {
+        row[t] = value;
+      }
       norm2 += double(value) * value;
     }
-    centred_norm2[r] = static_cast<float>(norm2);
+    // Each score is a sum of products whose magnitudes add up to at most w_max (|x| + |c|)^2;
+    // its rounding error is below (terms) * 2^-24 times that, and SquaredDistance's is of the
+    // same order. 3e-5 per 48 terms is 500 ulps of that scale: generous, and still far below the
+    // gaps between real codewords.
+    const float scale = static_cast<float>(std::sqrt(norm2)) + max_norm_;
+    tolerance[r] = 3e-5f * std::max(1, product_dimension_ / 48) * largest_weight * scale * scale;
   }
-  const ScoreJob job{centred, d, panels_.data(), norms2_.data(), padded_size(), scores, lowest};
+}
+
+void CodewordScorer::Score(const float* vectors, const float* weights, int count, float* scores, float* lowest,
+                           float* tolerance) const {
+  constexpr int kStackComponents = 128;  // rows of up to 128 products (voltree's are 16 to 96)
+  float stack_rows[kBlock * kStackComponents];
+  std::vector<float> heap_rows;
+  float* rows = stack_rows;
+  if (product_dimension_ > kStackComponents)
+    heap_rows.resize(size_t(kBlock) * product_dimension_), rows = heap_rows.data();
+  CentreRows(vectors, weights, count, rows, tolerance);
+  const ScoreJob job{rows, product_dimension_, panels_.data(), norms2_.data(), padded_size(), scores, lowest};
 #if defined(__x86_64__)
   if (avx2_) return ScoreAvx2(job);
 #endif
@@ -172,14 +203,6 @@ size_t CodewordScorer::Shortlist(const float* row, float limit, uint32_t* shortl
   for (size_t j = 0; j < size_; ++j)
     if (row[j] <= limit) shortlist[count++] = uint32_t(j);
   return count;
-}
-
-float CodewordScorer::Tolerance(float centred_norm2) const {
-  // Each score is a sum of d products of magnitude up to |x||c|; its rounding error is below
-  // d * 2^-24 * (|x| + |c|)^2, and SquaredDistance's is of the same order. 3e-5 is 500 ulps of
-  // that scale: generous for d = 48, and still far below the gaps between real codewords.
-  const float scale = std::sqrt(centred_norm2) + max_norm_;
-  return 3e-5f * std::max(1, dimension_ / 48) * scale * scale;
 }
 
 }  // namespace voltree

@@ -23,7 +23,9 @@ struct CompressOptions {
   int alpha_codebook = 2048;
   ColourSpace space = ColourSpace::kLab;
   CodewordRule rule = CodewordRule::kClosestMember;
-  bool alpha_weighted = false;  // weight colour distances by texel alpha
+  // Weight colour distances by texel alpha: the texels a billboard does not draw do not steer its
+  // codeword (+0.43 to +0.46 dB RGB at the input views of the four trees measured).
+  bool alpha_weighted = true;
   double tolerance = 1e-3;
   int max_iterations = 40;
   uint64_t seed = 1;

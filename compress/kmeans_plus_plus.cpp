@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "compress/center_bounds.h"
+#include "compress/nearest_codeword.h"
 #include "compress/principal_axes.h"
 #include "compress/vector_distance.h"
 #include "core/check.h"
@@ -294,98 +295,9 @@ class BoundedSeeding {
   std::vector<Chunk> chunks_;  // the last measurement
 };
 
-// Greedy k-means++ state for weighted distances. Each vector has its own weights, so no bound is
-// shared between vectors: every vector is measured at every step, in training-set order so the
-// reads stream, all trials in one pass. Sums run per fixed chunk, in order.
-class DenseSeeding {
- public:
-  DenseSeeding(const TrainingSet& set, uint32_t first_centre)
-      : set_(set), nearest_(set.size()), centre_of_(set.size(), 0), chunks_((set.size() + kChunk - 1) / kChunk) {
-    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
-      for (size_t i = c * kChunk; i < End(c); ++i)
-        nearest_[i] = SquaredDistance(set.Vector(i), set.Vector(first_centre), set.Weights(i), set.dimension);
-      chunks_[c].potential = SumNearest(c);
-    });
-  }
-
-  double Potential() const {
-    double sum = 0;
-    for (const Chunk& chunk : chunks_) sum += chunk.potential;
-    return sum;
-  }
-
-  size_t Sample(double unit) const {
-    return DrawPosition(
-        unit * Potential(), chunks_.size(), [&](size_t c) { return chunks_[c].potential; },
-        [](size_t c) { return c * kChunk; }, nearest_.data(), nearest_.size());
-  }
-
-  std::vector<double> Measure(const std::vector<size_t>& candidates) {
-    const size_t trials = candidates.size();
-    std::vector<double> gains(chunks_.size() * trials, 0);
-    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
-      chunks_[c].moves.clear();
-      for (size_t i = c * kChunk; i < End(c); ++i) {
-        const float nearest = nearest_[i];
-        for (size_t t = 0; t < trials; ++t) {
-          const float d =
-              SquaredDistance(set_.Vector(i), set_.Vector(candidates[t]), set_.Weights(i), set_.dimension, nearest);
-          if (d < nearest)
-            gains[c * trials + t] += nearest - d, chunks_[c].moves.push_back({uint32_t(i), uint32_t(t), d});
-        }
-      }
-    });
-    std::vector<double> potentials(trials, Potential());
-    for (size_t c = 0; c < chunks_.size(); ++c)
-      for (size_t t = 0; t < trials; ++t) potentials[t] -= gains[c * trials + t];
-    return potentials;
-  }
-
-  void Add(size_t t, uint32_t /*centre*/) {
-    ++centres_;
-    tbb::parallel_for(size_t(0), chunks_.size(), [&](size_t c) {
-      bool changed = false;
-      for (const Move& move : chunks_[c].moves) {
-        if (move.trial != t) continue;
-        nearest_[move.vector] = move.distance;
-        centre_of_[move.vector] = uint32_t(centres_ - 1);
-        changed = true;
-      }
-      if (changed) chunks_[c].potential = SumNearest(c);
-    });
-  }
-
-  void Assignment(std::vector<uint32_t>& nearest, std::vector<float>& distances) const {
-    nearest = centre_of_;
-    distances = nearest_;
-  }
-
- private:
-  static constexpr size_t kChunk = 4096;
-  struct Move {
-    uint32_t vector, trial;
-    float distance;
-  };
-  struct Chunk {
-    double potential = 0;
-    std::vector<Move> moves;  // of the last measurement
-  };
-
-  size_t End(size_t c) const { return std::min(nearest_.size(), (c + 1) * kChunk); }
-  double SumNearest(size_t c) const {
-    return std::accumulate(nearest_.begin() + c * kChunk, nearest_.begin() + End(c), 0.0);
-  }
-
-  const TrainingSet& set_;
-  std::vector<float> nearest_;       // squared distance of every vector to its nearest centre
-  std::vector<uint32_t> centre_of_;  // and which centre that is
-  std::vector<Chunk> chunks_;
-  size_t centres_ = 1;
-};
-
-// Greedy k-means++ from centre 0 = training vector `chosen` (already in `seeds`), on either state.
-template <class State>
-void Grow(const TrainingSet& set, State& seeding, size_t chosen, std::mt19937_64& rng, int trials, Seeds& seeds) {
+// Greedy k-means++ from centre 0 = training vector `chosen` (already in `seeds`).
+void Grow(const TrainingSet& set, BoundedSeeding& seeding, size_t chosen, std::mt19937_64& rng, int trials,
+          Seeds& seeds) {
   std::vector<size_t> candidates;
   for (size_t k = 1; k < seeds.centres.size(); ++k) {
     if (seeding.Potential() <= 0) {  // fewer distinct vectors than codewords: duplicates are harmless
@@ -416,13 +328,10 @@ Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, in
   std::mt19937_64 rng(seed);
   const size_t chosen = rng() % n;
   std::copy_n(set.Vector(chosen), set.dimension, seeds.centres.Codeword(0));
-  if (set.weighted()) {
-    DenseSeeding seeding(set, uint32_t(chosen));
-    Grow(set, seeding, chosen, rng, trials, seeds);
-  } else {
-    BoundedSeeding seeding(set, uint32_t(chosen), use_simd);
-    Grow(set, seeding, chosen, rng, trials, seeds);
-  }
+  BoundedSeeding seeding(set, uint32_t(chosen), use_simd);
+  Grow(set, seeding, chosen, rng, trials, seeds);
+  // Weighted sets are seeded on plain distances; their own nearest centres are one assignment.
+  if (set.weighted()) AssignNearest(seeds.centres, set, seeds.nearest, seeds.distances);
   return seeds;
 }
 

@@ -20,9 +20,12 @@ struct Seeds {
 };
 
 // `count` centres (at most the number of vectors), deterministic for a given seed whatever the
-// number of threads. All trials of a step are measured in one parallel pass, and for plain L2
-// two bounds skip most vectors without measuring them (compress/center_bounds.h). `use_simd` =
-// false keeps the bounds to the baseline instruction set (tests compare the two).
+// number of threads. All trials of a step are measured in one parallel pass, and two bounds skip
+// most vectors without measuring them (compress/center_bounds.h). The bounds need one metric for
+// all vectors, so a weighted set is seeded on plain L2 distances (its weights are texel alphas,
+// and its transparent texels already hold their billboard's mean colour); `nearest` and
+// `distances` are still the weighted ones. `use_simd` = false keeps the bounds to the baseline
+// instruction set (tests compare the two).
 Seeds SeedKMeansPlusPlus(const TrainingSet& set, size_t count, uint64_t seed, int trials = 3, bool use_simd = true);
 
 }  // namespace voltree

@@ -351,5 +351,25 @@ TEST(CodebookWarning, OnlyForASizeTheUserAskedFor) {
   fs::remove_all(dir);
 }
 
+// A flag whose behaviour became the default is refused with what to type instead, and nothing is
+// written.
+TEST(RetiredFlags, SayWhatToTypeInstead) {
+  if (!fs::exists(VOLTREE_BINARY)) GTEST_SKIP() << VOLTREE_BINARY << " is not built (build the voltree target)";
+  const fs::path dir = fs::temp_directory_path() / Str("voltree_retired_flags_", ::getpid());
+  fs::remove_all(dir);
+  MakeTinyDemo(dir / "ws");
+  for (const std::string flag : {"--alpha-weighted", "--zstd"}) {
+    const test::Outcome outcome = RunVoltree("compress ws " + flag + " -o out.vtree --quiet", dir);
+    EXPECT_EQ(outcome.status, 1) << outcome.output;
+    EXPECT_NE(outcome.output.find("voltree: error: " + flag + " is the default now: drop it (--no-"), std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(dir / "out.vtree"));
+  }
+  const test::Outcome unknown = RunVoltree("compress ws --no-such-flag --quiet", dir);  // CLI11's own message
+  EXPECT_NE(unknown.output.find("--no-such-flag"), std::string::npos) << unknown.output;
+  EXPECT_EQ(unknown.output.find("the default now"), std::string::npos) << unknown.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace voltree
