@@ -124,6 +124,7 @@ void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
   AddChoice(command, "--gla", compress.rule,
             {{"modified", CodewordRule::kClosestMember}, {"classic", CodewordRule::kCentroid}});
   AddFlag(command, "--no-alpha-weighted", compress.alpha_weighted);
+  AddFlag(command, "--no-codebook-trade", compress.trade_codebooks);
   AddOption(command, "--gla-tolerance", compress.tolerance);
   AddOption(command, "--gla-iterations", compress.max_iterations);
   AddOption(command, "--gla-seed", compress.seed);

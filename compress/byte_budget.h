@@ -32,8 +32,10 @@ using AssetSerializer = std::function<std::string(VtreeAsset&)>;
 
 // Compresses `volume` with the largest codebooks whose serialized asset fits options.max_bytes
 // (0: no budget, options' codebooks as given): options' sizes, or both halved, down to
-// options.smallest_budget_codebook. Deterministic: the same volume and options give the same
-// attempts and bytes.
+// options.smallest_budget_codebook. Where the budget binds and options.trade_codebooks is set,
+// colour codewords are then traded for alpha ones while the texture PSNR gains (the alpha
+// codebook doubled, the colour one the largest that still fits, down to 16). Deterministic: the
+// same volume and options give the same attempts and bytes.
 BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOptions& options,
                                          const AssetSerializer& serialize, Progress* progress = nullptr);
 

@@ -80,6 +80,7 @@ nlohmann::json CompressOptions::SettingsJson() const {
   settings["zstd"] = zstd;
   settings["max_bytes"] = max_bytes;
   settings["smallest_budget_codebook"] = smallest_budget_codebook;
+  settings["trade_codebooks"] = trade_codebooks;
   return settings;
 }
 
@@ -109,7 +110,8 @@ std::vector<uint8_t> DecodeBillboardsFromAtlas(const VtreeAsset& asset) {
   return out;
 }
 
-CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress) {
+CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress,
+                              TrainedCodebooks* trained) {
   options.Check();
   CheckCompressible(volume);
   const int texel_count = volume.texels * volume.texels;
@@ -121,12 +123,21 @@ CompressResult CompressVolume(const Volume& volume, const CompressOptions& optio
     progress->Say("compress", Str(stats.billboards, " billboards of ", volume.texels, "x", volume.texels, " texels"));
 
   // Distinct seeds per codebook so that colour and alpha do not share a random stream.
-  const TrainingSet colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
-  stats.colour =
-      RunGla(colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed), Reporter(progress, "colour"));
-  const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
-  stats.alpha = RunGla(alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
-                       Reporter(progress, "alpha"));
+  TrainedCodebooks local;
+  if (!trained) trained = &local;
+  if (!trained->colour.contains(options.colour_codebook)) {
+    const TrainingSet colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
+    trained->colour[options.colour_codebook] = RunGla(
+        colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed), Reporter(progress, "colour"));
+  }
+  if (!trained->alpha.contains(options.alpha_codebook)) {
+    const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
+    trained->alpha[options.alpha_codebook] =
+        RunGla(alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
+               Reporter(progress, "alpha"));
+  }
+  stats.colour = trained->colour.at(options.colour_codebook);
+  stats.alpha = trained->alpha.at(options.alpha_codebook);
 
   std::vector<CodewordUse> uses(stats.billboards);
   for (size_t i = 0; i < uses.size(); ++i)

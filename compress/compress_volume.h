@@ -10,6 +10,7 @@
 #include "compress/billboard_vectors.h"
 #include "compress/black_texels.h"
 #include "compress/gla.h"
+#include "compress/trained_codebooks.h"
 #include "core/progress.h"
 #include "core/vtree.h"
 #include "core/volume.h"
@@ -35,6 +36,9 @@ struct CompressOptions {
   bool zstd = true;
   uint64_t max_bytes = uint64_t(1) << 20;
   int smallest_budget_codebook = 64;
+  // When the budget binds, colour codewords may be traded for alpha ones where the texture PSNR
+  // gains (compress/byte_budget.h).
+  bool trade_codebooks = true;
 
   void Check() const;
   nlohmann::json ToJson() const;        // for the asset's provenance: what shapes its content, not the file
@@ -57,7 +61,10 @@ struct CompressResult {
   CompressStats stats;
 };
 
-CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress = nullptr);
+// `trained` (or none) holds codebooks already trained on this volume with these options but for
+// the sizes; the sizes it lacks are trained and added.
+CompressResult CompressVolume(const Volume& volume, const CompressOptions& options, Progress* progress = nullptr,
+                              TrainedCodebooks* trained = nullptr);
 
 // Billboards rebuilt from codewords (premultiplied RGBA8), in GatherTexels order.
 std::vector<uint8_t> DecodeBillboardsFromCodewords(const std::vector<uint8_t>& colour_rgb,

@@ -17,6 +17,7 @@ CompressOptions BudgetOptions(uint64_t max_bytes) {
   options.colour_codebook = options.alpha_codebook = 256;
   options.smallest_budget_codebook = 32;
   options.max_bytes = max_bytes;
+  options.trade_codebooks = false;  // the equal sizes' ladder alone; the trade has its own test
   return options;
 }
 
@@ -70,6 +71,45 @@ TEST(ByteBudget, OverEvenAtTheSmallestSaysSo) {
   CompressOptions small = BudgetOptions(1000);
   small.colour_codebook = 16;
   EXPECT_EQ(CompressWithinBudget(volume, small, SerializeRaw).kept.colour_codebook, 16);
+}
+
+// With the budget binding at equal sizes, colour codewords are traded for alpha ones only where
+// the texture PSNR gains, the pair kept still fits, and it is exactly the asset compressed
+// directly at those sizes (codebooks trained for one pair and reused in another are the same).
+TEST(ByteBudget, TradesColourCodewordsForAlphaOnesWhereTheTexturePsnrGains) {
+  // Leaves of two flat greens and many shapes, as on a dense crown: the alpha codewords matter.
+  Volume volume = BudgetVolume();
+  for (VolumeLevel& level : volume.levels)
+    for (size_t texel = 0; texel * 4 < level.texels.size(); ++texel) {
+      uint8_t* rgba = level.texels.data() + texel * 4;
+      const bool dark = (texel / 16) % 2 == 1;  // per billboard of 4 x 4 texels
+      const int green[3] = {dark ? 40 : 90, dark ? 90 : 160, dark ? 30 : 50};
+      for (int c = 0; c < 3; ++c) rgba[c] = uint8_t(green[c] * rgba[3] / 255);
+    }
+  // A budget just over the 16 / 256 asset, under the 256 / 256 one: equal sizes keep 128 / 128.
+  CompressOptions at_16_256 = BudgetOptions(0);
+  at_16_256.colour_codebook = 16;
+  at_16_256.alpha_codebook = 256;
+  const CompressResult direct = CompressVolume(volume, at_16_256);
+  VtreeAsset direct_asset = direct.asset;
+  const std::string direct_bytes = SerializeAsset(direct_asset);
+  const uint64_t budget = direct_bytes.size() + 1;
+  ASSERT_GT(BudgetBytesAt(volume, 256).size(), budget);
+  const BudgetedCompression equal = CompressWithinBudget(volume, BudgetOptions(budget), SerializeRaw);
+  ASSERT_EQ(equal.kept.colour_codebook, 128);
+  ASSERT_EQ(equal.kept.alpha_codebook, 128);
+  CompressOptions trading = BudgetOptions(budget);
+  trading.trade_codebooks = true;
+  const BudgetedCompression traded = CompressWithinBudget(volume, trading, SerializeRaw);
+  EXPECT_TRUE(traded.fits);
+  EXPECT_EQ(traded.kept.colour_codebook, 16);
+  EXPECT_EQ(traded.kept.alpha_codebook, 256);
+  EXPECT_GT(traded.result.stats.psnr_dxt5, equal.result.stats.psnr_dxt5 + 1);  // 33.9 against 31.6 dB here
+  EXPECT_TRUE(traded.bytes == direct_bytes);
+  EXPECT_LE(traded.attempts, equal.attempts + 2);  // bisection over 64, 32, 16
+  // Where the alpha codewords gain nothing, the equal sizes stay: the flat greens made them gain.
+  const BudgetedCompression leafy = CompressWithinBudget(BudgetVolume(), trading, SerializeRaw);
+  EXPECT_EQ(leafy.kept.colour_codebook, leafy.kept.alpha_codebook);
 }
 
 }  // namespace

@@ -157,8 +157,8 @@ TEST_F(EvalCli, BudgetMeasuresEveryStepAndAgreesWithTheRenderer) {
 TEST_F(EvalCli, CompressKeepsTheLargestCodebooksUnderItsBudget) {
   const std::string d = dir_.string();
   const uintmax_t at_128 = fs::file_size(dir_ / "tree.vtree");
-  const std::string budgeted =
-      Str("compress ", d, " --codebook 128 --alpha-codebook 128 --max-bytes ", at_128 - 1, " --force --quiet -o ");
+  const std::string budgeted = Str("compress ", d, " --codebook 128 --alpha-codebook 128 --max-bytes ", at_128 - 1,
+                                   " --no-codebook-trade --force --quiet -o ");
   ASSERT_EQ(Voltree(budgeted + d + "/budget_a.vtree"), 0);
   ASSERT_EQ(Voltree(budgeted + d + "/budget_b.vtree"), 0);
   EXPECT_LT(fs::file_size(dir_ / "budget_a.vtree"), at_128);
@@ -171,6 +171,15 @@ TEST_F(EvalCli, CompressKeepsTheLargestCodebooksUnderItsBudget) {
   info = test::VoltreeCaptured("info " + d + "/budget_raw.vtree");
   EXPECT_EQ(info.output.find(" of zstd)"), std::string::npos) << info.output;
   EXPECT_GT(fs::file_size(dir_ / "budget_raw.vtree"), fs::file_size(dir_ / "budget_a.vtree"));
+
+  // With the trade (the default), whatever pair is kept still fits, and it is recorded.
+  const std::string traded = Str("compress ", d, " --codebook 128 --alpha-codebook 128 --max-bytes ", at_128 - 1,
+                                 " --force --quiet -o ", d, "/budget_traded.vtree");
+  ASSERT_EQ(Voltree(traded), 0);
+  EXPECT_LT(fs::file_size(dir_ / "budget_traded.vtree"), at_128);
+  info = test::VoltreeCaptured("info " + d + "/budget_traded.vtree");
+  EXPECT_NE(info.output.find("codebooks: colour "), std::string::npos) << info.output;
+  EXPECT_EQ(info.output.find("alpha 64;"), std::string::npos) << "no trade: " << info.output;
 }
 
 // --distance K: the views as seen from K times farther, rendered at 1/K of the photos' size against
