@@ -126,15 +126,17 @@ CompressResult CompressVolume(const Volume& volume, const CompressOptions& optio
   TrainedCodebooks local;
   if (!trained) trained = &local;
   if (!trained->colour.contains(options.colour_codebook)) {
-    const TrainingSet colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
-    trained->colour[options.colour_codebook] = RunGla(
-        colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed), Reporter(progress, "colour"));
+    if (!trained->colour_set)
+      trained->colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
+    trained->colour[options.colour_codebook] =
+        RunGla(*trained->colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed),
+               Reporter(progress, "colour"));
   }
   if (!trained->alpha.contains(options.alpha_codebook)) {
-    const TrainingSet alpha_set = AlphaVectors(texels, texel_count);
-    trained->alpha[options.alpha_codebook] =
-        RunGla(alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
-               Reporter(progress, "alpha"));
+    if (!trained->alpha_set) trained->alpha_set = AlphaVectors(texels, texel_count);
+    trained->alpha[options.alpha_codebook] = RunGla(
+        *trained->alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
+        Reporter(progress, "alpha"));
   }
   stats.colour = trained->colour.at(options.colour_codebook);
   stats.alpha = trained->alpha.at(options.alpha_codebook);
