@@ -119,7 +119,6 @@ __attribute__((target("avx2,fma"))) size_t ShortlistAvx2(const float* row, size_
 CodewordScorer::CodewordScorer(const Codebook& codebook, Distance distance, bool use_simd)
     : dimension_(codebook.dimension),
       product_dimension_(distance == Distance::kWeighted ? 2 * codebook.dimension : codebook.dimension),
-      weighted_(distance == Distance::kWeighted),
       size_(codebook.size()),
       avx2_(use_simd && CpuHasAvx2Fma()) {
   const int d = dimension_;
@@ -136,7 +135,7 @@ CodewordScorer::CodewordScorer(const Codebook& codebook, Distance distance, bool
     double norm2 = 0;
     for (int t = 0; t < d; ++t) {
       const float centred = codebook.Codeword(j)[t] - mean_[t];
-      if (weighted_) {
+      if (weighted()) {
         column[t * kPanel] = -0.5f * centred * centred;
         column[(d + t) * kPanel] = centred;
       } else {
@@ -144,7 +143,7 @@ CodewordScorer::CodewordScorer(const Codebook& codebook, Distance distance, bool
       }
       norm2 += double(centred) * centred;
     }
-    norms2_[j] = weighted_ ? 0.f : static_cast<float>(norm2);
+    norms2_[j] = weighted() ? 0.f : static_cast<float>(norm2);
     max_norm_ = std::max(max_norm_, static_cast<float>(std::sqrt(norm2)));
   }
 }
@@ -157,10 +156,10 @@ void CodewordScorer::CentreRows(const float* vectors, const float* weights, int 
     float* row = rows + size_t(r) * product_dimension_;
     double norm2 = 0;
     float largest_weight = 1;
-    if (weighted_) largest_weight = *std::max_element(weights + size_t(r) * d, weights + size_t(r + 1) * d);
+    if (weighted()) largest_weight = *std::max_element(weights + size_t(r) * d, weights + size_t(r + 1) * d);
     for (int t = 0; t < d; ++t) {
       const float value = vectors[size_t(r) * d + t] - mean_[t];
-      if (weighted_) {
+      if (weighted()) {
         const float weight = weights[size_t(r) * d + t];
         row[t] = weight;
         row[d + t] = weight * value;

@@ -2,7 +2,7 @@
 // |x - c|^2 = |x|^2 + (|c|^2 - 2 x.c), and only the bracket, the score, is computed: |x|^2 does
 // not change which codeword is nearest. This is how BLAS-based k-means is fast, but it rounds
 // differently from a direct sum of squared differences, so the score only shortlists: a caller
-// re-measures every codeword whose score is within Tolerance() of the best one, and gets exactly
+// re-measures every codeword whose score is within the row's tolerance of the best one, and gets exactly
 // what a brute-force scan gets. Vectors and codewords are centred on the codebook mean first,
 // because the rounding error grows with the norms and Lab vectors sit far from the origin.
 // Weighted L2, where each vector brings its own weights w, is a product too, of twice the length:
@@ -45,12 +45,12 @@ class CodewordScorer {
   size_t Shortlist(const float* row, float limit, uint32_t* shortlist) const;
 
  private:
+  bool weighted() const { return product_dimension_ != dimension_; }
   // Fills the kernel's rows (kBlock x product_dimension_) and the tolerances.
   void CentreRows(const float* vectors, const float* weights, int count, float* rows, float* tolerance) const;
 
   int dimension_ = 0;
   int product_dimension_ = 0;  // dimension_, or 2 dimension_ when weighted
-  bool weighted_ = false;
   size_t size_ = 0;
   std::vector<float> mean_;  // the centre: codebook mean
   // Panel-major, [panel][component][kPanel]: c - mean, or [-(c - mean)^2 / 2, c - mean] when
