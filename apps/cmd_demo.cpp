@@ -42,12 +42,13 @@ void AddDemoCommand(CLI::App& app) {
   AddFlag(*command, "--force", o.force,
           "Write into a non-empty folder that is not a previous demo's, beside its files (never replacing one)");
   AddFlag(*command, "--quiet", args->quiet);
-  command->callback([args] {
+  command->callback([command, args] {
     DemoOptions options = args->options;
     // At 5 degrees half of the photos fail to register (bench/calibrate.cpp); 20 registers all.
     if (options.colmap) options.studio.min_elevation_degrees = std::max(options.studio.min_elevation_degrees, 20.0);
     Progress progress(args->quiet);
     const DemoResult result = RunDemo(options, progress);
+    WarnAboutCompression(*command, result.compressed, options.compress.max_bytes, args->quiet);
     std::printf("%s (%.1f s)\n", result.summary.string().c_str(), result.seconds);
     if (!result.index_html.empty()) {
       std::printf("%s", EvaluationTable(result.evaluation).c_str());

@@ -59,11 +59,12 @@ void AddRunCommand(CLI::App& app) {
           "Replace volume/, tree.vtree, report/orbit/ and report files not written by eval (default: refuse); "
           "existing mattes/ and sparse/ are always kept");
   AddFlag(*command, "--quiet", args->quiet);
-  command->callback([args] {
+  command->callback([command, args] {
     RunOptions options = args->options;
     options.matte.threads = options.reconstruct.threads = args->threads;
     Progress progress(args->quiet);
     const RunResult result = RunWorkspace(options, progress);
+    if (result.compressed) WarnAboutCompression(*command, *result.compressed, options.compress.max_bytes, args->quiet);
     PrintStageTimes(result);
     PrintEvaluation(result.evaluation);
   });

@@ -1,6 +1,7 @@
 #include "apps/stage_options.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "apps/option_parsing.h"
@@ -133,6 +134,27 @@ void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
       [](const std::string& text, uint64_t& bytes) { bytes = ParseBytes("--max-bytes", text); },
       compress.max_bytes % (1 << 20) == 0 ? Str(compress.max_bytes >> 20, "MiB") : Str(compress.max_bytes));
   AddFlag(command, "--no-zstd", compress.zstd);
+}
+
+void WarnAboutCompression(const CLI::App& command, const CompressWorkspaceResult& compressed, uint64_t max_bytes,
+                          bool quiet) {
+  // The default size is only the largest one tried, so a small volume falling short of it is no news.
+  const auto warn_if_smaller = [&command](const char* option, int asked, size_t made) {
+    if (command.get_option(option)->count() > 0 && made < size_t(asked))
+      std::fprintf(stderr,
+                   "voltree: warning: %s %d: the codebook has only %zu codewords; the volume's billboards give no "
+                   "more distinct ones\n",
+                   option, asked, made);
+  };
+  warn_if_smaller("--codebook", compressed.kept.colour_codebook, compressed.stats.colour.codebook.size());
+  warn_if_smaller("--alpha-codebook", compressed.kept.alpha_codebook, compressed.stats.alpha.codebook.size());
+  if (!compressed.within_budget && quiet)
+    std::fprintf(stderr,
+                 "voltree: warning: %s is %llu bytes, over --max-bytes %llu even with codebooks %d / %d; "
+                 "reconstruct with fewer --levels or a lower --prune for a smaller asset\n",
+                 compressed.asset.string().c_str(), static_cast<unsigned long long>(compressed.bytes),
+                 static_cast<unsigned long long>(max_bytes), compressed.kept.colour_codebook,
+                 compressed.kept.alpha_codebook);
 }
 
 void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit) {

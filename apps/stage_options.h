@@ -8,6 +8,7 @@
 #include "capture/calibrate.h"
 #include "capture/matte.h"
 #include "compress/compress_volume.h"
+#include "compress/compress_workspace.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"
 #include "reconstruct/reconstruct.h"
@@ -23,6 +24,12 @@ void AddCalibrateOptions(CLI::App& command, CalibrateOptions& calibrate);
 void AddMatteOptions(CLI::App& command, MatteOptions& matte);
 void AddReconstructOptions(CLI::App& command, ReconstructOptions& reconstruct);
 void AddCompressOptions(CLI::App& command, CompressOptions& compress);
+// After a command that added AddCompressOptions compressed: warns on stderr where a codebook came out
+// smaller than the user explicitly asked for (GLA cannot make more codewords than there are distinct
+// billboards) and, when `quiet` silenced the progress lines that already said it, where the asset is
+// over --max-bytes even at the smallest codebooks.
+void WarnAboutCompression(const CLI::App& command, const CompressWorkspaceResult& compressed, uint64_t max_bytes,
+                          bool quiet);
 void AddOrbitOptions(CLI::App& command, OrbitFramesOptions& orbit);
 void AddEvaluateOptions(CLI::App& command, EvaluateOptions& evaluate);
 void AddRenderOptions(CLI::App& command, TreeRenderOptions& render);

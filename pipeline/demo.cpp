@@ -97,17 +97,14 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
     });
   }
   timed("reconstruct", [&] { ReconstructWorkspace(workspace, {options.reconstruct}, progress); });
-  CompressStats compress_stats;
-  CompressOptions compress_kept = options.compress;
+  CompressWorkspaceResult compressed;
   timed("compress", [&] {
     CompressWorkspaceOptions where;
     where.compress = options.compress;
     where.source_name = options.output.lexically_normal().filename().string();  // not the staging folder's
     if (where.source_name.empty())
       where.source_name = options.output.lexically_normal().parent_path().filename().string();
-    CompressWorkspaceResult compressed = CompressWorkspace(workspace, where, progress);
-    compress_stats = std::move(compressed.stats);
-    compress_kept = compressed.kept;
+    compressed = CompressWorkspace(workspace, where, progress);
   });
   if (options.orbit.frames > 0)
     timed("orbit", [&] {
@@ -140,10 +137,10 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   double total = 0;
   for (const auto& [stage_name, seconds] : summary["seconds"].items()) total += seconds.get<double>();
   summary["seconds"]["total"] = total;
-  summary["texture_psnr_db"] = {{"vq", compress_stats.psnr_vq}, {"dxt5", compress_stats.psnr_dxt5}};
+  summary["texture_psnr_db"] = {{"vq", compressed.stats.psnr_vq}, {"dxt5", compressed.stats.psnr_dxt5}};
   summary["asset_bytes"] = fs::file_size(workspace / "tree.vtree");
   // The codebooks the byte budget kept, with the budget itself: what made the asset this size.
-  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", compress_kept.SettingsJson()}};
+  nlohmann::json used = {{"reconstruct", options.reconstruct.ToJson()}, {"compress", compressed.kept.SettingsJson()}};
   used["orbit"] = {{"frames", options.orbit.frames}, {"size", options.orbit.size}};
   used["evaluate"] = options.evaluate;
   summary["options"] = used;
@@ -152,8 +149,10 @@ DemoResult RunDemo(const DemoOptions& options, Progress& progress) {
   progress.Say("demo",
                Str("done in ", std::round(total * 10) / 10, " s: ", options.output.string(), " (asset ",
                    (options.output / "tree.vtree").string(), ", ", summary["asset_bytes"].get<uint64_t>(),
-                   " bytes, codebooks ", compress_kept.colour_codebook, " / ", compress_kept.alpha_codebook, ")"));
+                   " bytes, codebooks ", compressed.kept.colour_codebook, " / ", compressed.kept.alpha_codebook, ")"));
   result.summary = options.output / kSummary;
+  result.compressed = std::move(compressed);
+  result.compressed.asset = options.output / "tree.vtree";  // not the staging folder's
   result.seconds = total;
   return result;
 }

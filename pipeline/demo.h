@@ -7,6 +7,7 @@
 
 #include "capture/calibrate.h"
 #include "compress/compress_volume.h"
+#include "compress/compress_workspace.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"
@@ -47,10 +48,11 @@ struct DemoOptions {
 // report/orbit/ (renders), report/metrics.json + index.html + eval/ (evaluation), demo.json
 // (options, timings per stage, sizes, headline metrics).
 struct DemoResult {
-  std::filesystem::path summary;     // demo.json
-  std::filesystem::path index_html;  // empty without evaluation
-  LevelMetricsTable evaluation;      // empty without evaluation
-  double seconds = 0;                // all stages
+  std::filesystem::path summary;       // demo.json
+  std::filesystem::path index_html;    // empty without evaluation
+  CompressWorkspaceResult compressed;  // the codebook sizes kept and made, the bytes
+  LevelMetricsTable evaluation;        // empty without evaluation
+  double seconds = 0;                  // all stages
 };
 DemoResult RunDemo(const DemoOptions& options, Progress& progress);
 

@@ -211,7 +211,8 @@ RunResult RunWorkspace(const RunOptions& options, Progress& progress) {
     CompressWorkspaceOptions compress;
     compress.compress = options.compress;
     compress.force = replace;
-    result.asset = CompressWorkspace(dir, compress, progress).asset;
+    result.compressed = CompressWorkspace(dir, compress, progress);
+    result.asset = result.compressed->asset;
   });
   const fs::path report = options.evaluate.report.empty() ? dir / "report" : options.evaluate.report;
   resumable(OrbitRecipe(options), [&](bool replace) {

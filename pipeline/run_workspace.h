@@ -20,6 +20,7 @@
 #include "capture/calibrate.h"
 #include "capture/matte.h"
 #include "compress/compress_volume.h"
+#include "compress/compress_workspace.h"
 #include "core/progress.h"
 #include "pipeline/evaluate.h"
 #include "pipeline/orbit_frames.h"
@@ -62,6 +63,7 @@ struct StageTime {
 struct RunResult {
   std::vector<StageTime> stages;
   std::filesystem::path asset;
+  std::optional<CompressWorkspaceResult> compressed;  // when this run compressed (not resumed)
   EvaluateResult evaluation;
 };
 

@@ -335,7 +335,7 @@ TEST(BadInputTable, ReadmeTableMatchesTheCases) {
 
 // The default codebook size is only the largest the byte budget tries: a volume with fewer
 // distinct billboards than that is no news, while the same shortfall of a size asked for is
-// (the case above).
+// (the case above), from every command that compresses.
 TEST(CodebookWarning, OnlyForASizeTheUserAskedFor) {
   if (!fs::exists(VOLTREE_BINARY)) GTEST_SKIP() << VOLTREE_BINARY << " is not built (build the voltree target)";
   const fs::path dir = fs::temp_directory_path() / Str("voltree_codebook_warning_", ::getpid());
@@ -348,6 +348,17 @@ TEST(CodebookWarning, OnlyForASizeTheUserAskedFor) {
   EXPECT_EQ(asked.status, 0) << asked.output;
   EXPECT_NE(asked.output.find("--alpha-codebook 4096: the codebook has only"), std::string::npos) << asked.output;
   EXPECT_EQ(asked.output.find("--codebook 2048"), std::string::npos) << asked.output;
+  // `run` and `demo` compress with the same flags and say the same.
+  const test::Outcome run =
+      RunVoltree("run ws --alpha-codebook 4096 --levels 3 --orbit 1 --orbit-size 32 --force --quiet", dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("--alpha-codebook 4096: the codebook has only"), std::string::npos) << run.output;
+  const test::Outcome demo = RunVoltree(
+      "demo --tree young-oak --views 4 --held-out 1 --size 32x32 --levels 3 --orbit 0 --no-eval --quiet "
+      "--alpha-codebook 4096 -o demo",
+      dir);
+  EXPECT_EQ(demo.status, 0) << demo.output;
+  EXPECT_NE(demo.output.find("--alpha-codebook 4096: the codebook has only"), std::string::npos) << demo.output;
   fs::remove_all(dir);
 }
 
