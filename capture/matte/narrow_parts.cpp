@@ -15,6 +15,24 @@ cv::Mat NarrowParts(const cv::Mat& inside, int radius) {
   return (inside != 0) & (wide == 0);
 }
 
+namespace {
+
+// The narrow parts without the slivers the opening leaves along the crown's outline.
+cv::Mat NarrowPartsWithoutSlivers(const cv::Mat& inside, int radius, int band) {
+  cv::Mat parts;
+  cv::morphologyEx(NarrowParts(inside, radius), parts, cv::MORPH_OPEN, Disc(band));
+  return parts;
+}
+
+}  // namespace
+
+cv::Mat NarrowCentreLines(const cv::Mat& inside, int radius, int band) {
+  const cv::Mat parts = NarrowPartsWithoutSlivers(inside, radius, band);
+  cv::Mat centre = cv::Mat::zeros(parts.size(), CV_8UC1);
+  if (cv::countNonZero(parts) > 0) cv::ximgproc::thinning(parts, centre);
+  return centre;
+}
+
 void SolveAgainInside(const cv::Mat& rgb, const cv::Mat& region, const cv::Mat& tree, const cv::Mat& background,
                       const MatteOptions& options, cv::Mat& alpha) {
   cv::Mat trimap(alpha.size(), CV_8UC1, cv::Scalar(128));
@@ -33,9 +51,7 @@ void SolveAgainInside(const cv::Mat& rgb, const cv::Mat& region, const cv::Mat& 
 
 bool MendMissedNarrowParts(const cv::Mat& rgb, const cv::Mat& inside, const cv::Mat& background,
                            const NarrowPartMend& mend, const MatteOptions& options, cv::Mat& alpha) {
-  cv::Mat parts;
-  // The opening also leaves slivers along the crown's outline; those are no part.
-  cv::morphologyEx(NarrowParts(inside, mend.radius), parts, cv::MORPH_OPEN, Disc(mend.band));
+  const cv::Mat parts = NarrowPartsWithoutSlivers(inside, mend.radius, mend.band);
   if (cv::countNonZero(parts) == 0) return false;
   cv::Mat centre;
   cv::ximgproc::thinning(parts, centre);

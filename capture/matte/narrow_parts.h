@@ -13,6 +13,11 @@ namespace voltree::matte {
 // `radius` pixels; CV_8U, 255 there.
 cv::Mat NarrowParts(const cv::Mat& inside, int radius);
 
+// The centre lines of the narrow parts of `inside` (thinner than a disc of `radius` pixels), the
+// slivers thinner than `band` along the crown's outline left out; CV_8U, 255 on them. Where the
+// silhouettes of every photo agree that closely, the centre line runs on the tree.
+cv::Mat NarrowCentreLines(const cv::Mat& inside, int radius, int band);
+
 struct NarrowPartMend {
   int radius = 24;          // narrower than a disc of this radius (pixels) is a narrow part
   int band = 4;             // the hull's band (pixels): slivers thinner than this are no part

@@ -5,6 +5,7 @@
 // for the tree, and the tree, against the ground, missed. Nothing of those mattes seeds the tree.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -54,6 +55,21 @@ int TrunkRow(const Image8& matte) {
     for (int x = 0; x < matte.width; ++x)
       if (matte.at(x, y) > 127) top = std::min(top, y), bottom = std::max(bottom, y);
   return bottom - (bottom - top) / 3;
+}
+
+// The mend alone: every photo trusted, no guard's passes.
+HullRematteOptions MendAlone() {
+  HullRematteOptions options;
+  options.max_carve_fraction = 0.99;
+  options.max_keep_ratio = 1e6;
+  options.guard_passes = 0;
+  // A narrow part must be twice the radius long: the young oak's trunk below the crown is
+  // shorter than the aspen's.
+  options.narrow_radius_bands = 5;
+  // Carried down to the ground from the hull's foot, the trunk comes back without any mend
+  // (recall 0.497 inside the usual hull alone): trunk_foot_test.cpp measures that.
+  options.carry_trunk_to_ground = false;
+  return options;
 }
 
 class HullRematte : public ::testing::Test {
@@ -179,16 +195,7 @@ TEST(HullRematteTrunk, MendsATrunkThatSeveralPhotosMissed) {
     }
     mattes.push_back(std::move(matte));
   }
-  HullRematteOptions options;  // the mend alone: every photo trusted, no guard's passes
-  options.max_carve_fraction = 0.99;
-  options.max_keep_ratio = 1e6;
-  options.guard_passes = 0;
-  // A narrow part must be twice the radius long: the young oak's trunk below the crown is
-  // shorter than the aspen's.
-  options.narrow_radius_bands = 5;
-  // Carried down to the ground from the hull's foot, the trunk comes back without any mend
-  // (recall 0.497 inside the usual hull alone): trunk_foot_test.cpp measures that.
-  options.carry_trunk_to_ground = false;
+  HullRematteOptions options = MendAlone();
   auto trunk_recall = [&](bool majority, size_t* mended) {
     options.mend_inside_majority_hull = majority;
     std::vector<Image8> mended_mattes = mattes;
@@ -214,6 +221,71 @@ TEST(HullRematteTrunk, MendsATrunkThatSeveralPhotosMissed) {
   EXPECT_GE(mended, 2u);
   EXPECT_EQ(mended_before, 0u);
   EXPECT_GT(recall, before + 0.1);
+}
+
+// The ground behind a trunk, painted on that trunk: what the aspen's eye-level photo showed, a grey
+// trunk in front of a grey-green bush of its colour. Each pixel of the trunk below `row` in photo
+// `target` takes 90 % of the colour the nearest other photo shows where the pixel's ray meets the
+// ground (at 80 % parallax no longer explains it).
+void CamouflageTrunk(const std::vector<View>& views, const std::vector<Image8>& photos, const Image8& truth,
+                     size_t target, int row, Image8& photo) {
+  size_t nearest = target == 0 ? 1 : 0;
+  const Eigen::Vector3d center = views[target].pose.Center();
+  for (size_t i = 0; i < views.size(); ++i)
+    if (i != target && (views[i].pose.Center() - center).norm() < (views[nearest].pose.Center() - center).norm())
+      nearest = i;
+  const View& other = views[nearest];
+  for (int y = row; y < truth.height; ++y)
+    for (int x = 0; x < truth.width; ++x) {
+      if (truth.at(x, y) <= 127) continue;
+      const Eigen::Vector3d ray = views[target].PixelRay({x + 0.5, y + 0.5});
+      if (ray.z() >= 0) continue;
+      const Eigen::Vector3d ground = center - center.z() / ray.z() * ray;
+      const Eigen::Vector2d at = other.camera.Project(other.pose.ToCamera(ground));
+      const int u = int(std::floor(at.x())), v = int(std::floor(at.y()));
+      if (u < 0 || v < 0 || u >= photos[nearest].width || v >= photos[nearest].height) continue;
+      for (int c = 0; c < 3; ++c)
+        photo.at(x, y, c) = uint8_t(std::lround(0.9 * photos[nearest].at(u, v, c) + 0.1 * photo.at(x, y, c)));
+    }
+}
+
+// One lower-ring photo whose trunk shows almost the very ground behind it and whose first matte
+// missed that trunk: the ground hypothesis of parallax explains the trunk as ground, and the mend,
+// which counts known background as no miss, left the trunk out (and the reconstruction carves
+// what a matte leaves under 5/255 out of every view). Spared along the narrow parts' centre lines,
+// the trunk is mended; the photo's colours barely tell it, so only part of it comes back.
+// Measured, the share of the trunk kept above 5/255: 0.103 spared, 0.000 claimed (0.231 both at
+// 80 %, where parallax does not claim it).
+TEST(HullRematteTrunk, ParallaxDoesNotClaimATrunkInFrontOfGroundOfItsColour) {
+  const test::YoungOakPhotos set = test::PhotographYoungOak("--min-elevation 20", 384);
+  ASSERT_FALSE(set.views.empty());
+  const size_t target = 2;  // on the lower ring (the studio names that ring's photos first)
+  const int row = TrunkRow(set.truth[target]);
+  std::vector<Image8> photos = set.photos, mattes = set.truth;
+  CamouflageTrunk(set.views, set.photos, set.truth[target], target, row, photos[target]);
+  for (int y = row; y < mattes[target].height; ++y)
+    for (int x = 0; x < mattes[target].width; ++x) mattes[target].at(x, y) = 0;
+  HullRematteOptions options = MendAlone();
+  auto trunk_recall = [&](bool spared, bool* mended) {
+    options.parallax_spares_narrow_parts = spared;
+    std::vector<Image8> result = mattes;
+    *mended = !RematteFromHull(set.views, photos, result, options).mended.empty();
+    double trunk = 0, found = 0;
+    for (int y = row; y < set.truth[target].height; ++y)
+      for (int x = 0; x < set.truth[target].width; ++x)
+        if (set.truth[target].at(x, y) > 127) {
+          ++trunk;
+          found += result[target].at(x, y) > 5;
+        }
+    return found / std::max(trunk, 1.0);
+  };
+  bool mended_spared = false, mended_claimed = true;
+  const double spared = trunk_recall(true, &mended_spared), claimed = trunk_recall(false, &mended_claimed);
+  std::printf("the camouflaged trunk kept (alpha > 5/255): %.3f spared from parallax, %.3f claimed by it\n", spared,
+              claimed);
+  EXPECT_TRUE(mended_spared);
+  EXPECT_FALSE(mended_claimed);
+  EXPECT_GT(spared, claimed + 0.05);
 }
 
 // The eye-level ring of the default rings sees sky behind the upper crown (the plain backdrop:
