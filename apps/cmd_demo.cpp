@@ -44,6 +44,7 @@ void AddDemoCommand(CLI::App& app) {
   AddFlag(*command, "--quiet", args->quiet);
   command->callback([command, args] {
     DemoOptions options = args->options;
+    DeepenWithinBudgetUnlessLevelsGiven(*command, options.compress.max_bytes, options.reconstruct);
     // At 5 degrees half of the photos fail to register (bench/calibrate.cpp); 20 registers all.
     if (options.colmap) options.studio.min_elevation_degrees = std::max(options.studio.min_elevation_degrees, 20.0);
     Progress progress(args->quiet);

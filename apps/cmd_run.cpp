@@ -62,6 +62,7 @@ void AddRunCommand(CLI::App& app) {
   command->callback([command, args] {
     RunOptions options = args->options;
     options.matte.threads = options.reconstruct.threads = args->threads;
+    DeepenWithinBudgetUnlessLevelsGiven(*command, options.compress.max_bytes, options.reconstruct);
     Progress progress(args->quiet);
     const RunResult result = RunWorkspace(options, progress);
     if (result.compressed) WarnAboutCompression(*command, *result.compressed, options.compress.max_bytes, args->quiet);

@@ -127,7 +127,8 @@ std::vector<OptionSpec> ReconstructFlags() {
       {"--levels",
        {"ReconstructOptions.levels"},
        "Octree levels: level 0 is the root, the finest has branching^(levels-1) cells per axis; auto: as many as "
-       "the photos fill (a finest texel covers about one photo pixel)"},
+       "the photos fill (a finest texel covers about one photo pixel). Not given to run or demo: 7, and more where "
+       "the photos fill them and the asset is predicted to fit --max-bytes (a sparse tree)"},
       {"--branching",
        {"ReconstructOptions.branching"},
        "Cells per axis per subdivision: 2 (octree) or 3 (tri-grid, Reche 2004)"},

@@ -118,6 +118,10 @@ void AddReconstructOptions(CLI::App& command, ReconstructOptions& reconstruct) {
   AddOption(command, "--fit-neighbour-weight", reconstruct.fit.neighbour_weight);
 }
 
+void DeepenWithinBudgetUnlessLevelsGiven(const CLI::App& command, uint64_t max_bytes, ReconstructOptions& reconstruct) {
+  if (command.get_option("--levels")->count() == 0) reconstruct.deepen_within_bytes = max_bytes;
+}
+
 void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
   AddOption(command, "--codebook", compress.colour_codebook);
   AddOption(command, "--alpha-codebook", compress.alpha_codebook);

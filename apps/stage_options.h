@@ -23,6 +23,9 @@ void AddStudioOptions(CLI::App& command, StudioOptions& studio);
 void AddCalibrateOptions(CLI::App& command, CalibrateOptions& calibrate);
 void AddMatteOptions(CLI::App& command, MatteOptions& matte);
 void AddReconstructOptions(CLI::App& command, ReconstructOptions& reconstruct);
+// For a command that reconstructs and compresses: unless --levels was given, the octree may grow
+// deeper than its default where the photos fill it and `max_bytes` is predicted to hold it.
+void DeepenWithinBudgetUnlessLevelsGiven(const CLI::App& command, uint64_t max_bytes, ReconstructOptions& reconstruct);
 void AddCompressOptions(CLI::App& command, CompressOptions& compress);
 // After a command that added AddCompressOptions compressed: warns on stderr where a codebook came out
 // smaller than the user explicitly asked for (GLA cannot make more codewords than there are distinct

@@ -40,6 +40,7 @@ struct BenchOptions {
   double min_elevation = 5;
   int max_features = CalibrateOptions{}.max_features;  // what `run` and `calibrate` use
   int levels = 7;
+  bool deepen = true;    // as `run` without --levels: more levels where the photos fill them and the budget holds
   std::string up = "y";  // of mesh files (glTF convention)
   bool truth_runs = true;
   fs::path work = fs::temp_directory_path() / "voltree_bench_capture";
@@ -153,6 +154,7 @@ void RunCase(const std::string& tree, const std::string& backdrop, const BenchOp
   options.calibrate.max_image_size = bench.size;
   options.calibrate.max_features = bench.max_features;
   options.reconstruct.levels = bench.levels;
+  if (bench.deepen) options.reconstruct.deepen_within_bytes = options.compress.max_bytes;
   options.evaluate.each_level = false;
   options.orbit.frames = 4;
   options.force = true;
@@ -201,16 +203,21 @@ int main(int argc, char** argv) {
   app.add_option("--size", bench.size, "Photo width and height (pixels)")->capture_default_str();
   app.add_option("--min-elevation", bench.min_elevation, "Lowest ring (degrees)")->capture_default_str();
   app.add_option("--max-features", bench.max_features, "SIFT features per photo at most")->capture_default_str();
-  app.add_option("--levels", bench.levels, "Octree levels")->capture_default_str();
+  auto* levels = app.add_option("--levels", bench.levels,
+                                "Octree levels (not given: 7, and more where the photos fill them and the asset is "
+                                "predicted to fit the byte budget, as run does)")
+                     ->capture_default_str();
   app.add_option("--up", bench.up, "Up axis of mesh files: y or z")->capture_default_str();
   app.add_flag("!--no-truth", bench.truth_runs, "Skip the runs with the true cameras and mattes");
   app.add_option("--work", bench.work, "Folder for the sets (replaced)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  bench.deepen = levels->count() == 0;
   try {
     std::printf(
-        "%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels; camera error per ring: "
+        "%d views (+%d held out) at %d², lowest ring %.0f°, %d features, %d levels%s; camera error per ring: "
         "worst rotation / worst centre (%% of the camera distance); matte MSE as a fraction, SAD in thousands\n",
-        bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels);
+        bench.views, bench.held_out, bench.size, bench.min_elevation, bench.max_features, bench.levels,
+        bench.deepen ? " (more where the byte budget holds them)" : "");
     std::printf(
         "| tree | backdrop | input | registered (low + high ring) | camera error | matte MSE mean / worst | SAD mean / "
         "worst | "

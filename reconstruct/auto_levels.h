@@ -3,6 +3,9 @@
 // photo pixel; finer levels would hold detail no photo has.
 #pragma once
 
+#include <optional>
+
+#include "reconstruct/opacity.h"
 #include "reconstruct/reconstruct.h"
 
 namespace voltree {
@@ -10,6 +13,16 @@ namespace voltree {
 // Hierarchy levels (root included) for these photos and bounds at options' branching, texels
 // and margin. Throws Error naming the photo size when it supports fewer than 3 levels.
 int LevelsForPhotos(const ReconstructInput& input, const ReconstructOptions& options);
+
+// How deep ReconstructOptions::deepen_within_bytes may take the octree: as many levels as the
+// photos fill and the memory available holds, never fewer than options.levels.
+int DeepeningCeiling(const ReconstructInput& input, const ReconstructOptions& options);
+
+// The deepening rule for `options` (null when deepen_within_bytes is 0 or auto_levels is set):
+// the bytes a billboard costs at the byte budget's smallest codebooks are measured on the demo
+// oak (1 020 235 bytes for 548 351 billboards at 16 / 1024 codewords: 1.86), and every view may
+// keep a billboard in every cell.
+std::optional<DeepeningRule> DeepeningFor(const ReconstructInput& input, const ReconstructOptions& options);
 
 // `options` with levels resolved when auto_levels is set (unchanged otherwise).
 ReconstructOptions ResolveLevels(const ReconstructInput& input, const ReconstructOptions& options);

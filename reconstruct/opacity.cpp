@@ -41,8 +41,9 @@ std::vector<OpacityLevel> BuildHierarchyFromFinest(const OpacityLevel& finest, i
 
 OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& views,
                               const std::vector<MatteStats>& mattes, int levels, const OpacityOptions& options,
-                              Progress* progress) {
+                              Progress* progress, const DeepeningRule* deepening) {
   OpacityResult result;
+  size_t cells_so_far = 0;
   std::vector<CellCoord> candidates = {CellCoord{0, 0, 0}};
   std::vector<double> initial = {0.0};
   int finest = -1;
@@ -82,6 +83,18 @@ OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& v
     result.reports.push_back(report);
     finest = level;
 
+    // Cells of zero sigma get no billboards (the hierarchy is rebuilt from the finest without them).
+    const size_t alive = size_t(std::count_if(x.begin(), x.end(), [](double sigma) { return sigma > 0; }));
+    cells_so_far += alive;
+    if (deepening != nullptr && level + 1 >= deepening->required && level + 1 < levels) {
+      const size_t predicted = cells_so_far + size_t(deepening->growth * double(alive));
+      const bool deeper = predicted <= deepening->max_cells;
+      if (progress)
+        progress->Say("reconstruct", Str(deeper ? "one level more" : "no more levels", ": level ", level + 1,
+                                         " would bring the octree to about ", predicted, " cells, ",
+                                         deeper ? "within" : "over", " the byte budget's ", deepening->max_cells));
+      if (!deeper) levels = level + 1;
+    }
     // Refine the dense cells; their children start from the parent's sigma.
     candidates.clear();
     initial.clear();

@@ -53,10 +53,20 @@ struct OpacityResult {
   std::vector<OpacityLevelReport> reports;
 };
 
-// Levels 0 .. levels-1 of the hierarchy, coarse to fine.
+// When levels beyond the first `required` are added: only while the cells of non-zero sigma of
+// the levels solved, and the next level's predicted as `growth` times the finest's, stay within
+// `max_cells` (a thin branch's cells double or so per level, a leafy surface's quadruple).
+struct DeepeningRule {
+  int required = 1;
+  size_t max_cells = 0;
+  double growth = 4;
+};
+
+// Levels 0 .. levels-1 of the hierarchy, coarse to fine; with `deepening`, fewer where it stops
+// (the result then has as many levels as were solved).
 OpacityResult EstimateOpacity(const GridFrame& frame, const std::vector<View>& views,
                               const std::vector<MatteStats>& mattes, int levels, const OpacityOptions& options,
-                              Progress* progress);
+                              Progress* progress, const DeepeningRule* deepening = nullptr);
 
 // Levels 0 .. finest-1 rebuilt from `finest` (cells at level `finest_level`): parent sigma = sum of
 // the children's sigma / branching^3. Cells with zero sigma are dropped first.

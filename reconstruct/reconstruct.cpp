@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -82,6 +83,7 @@ nlohmann::json ReconstructOptions::ToJson() const {
           {"samples_per_cell", opacity.tomography.samples_per_cell},
           {"epsilon", opacity.tomography.epsilon},
           {"billboard_scale", billboards.scale},
+          {"deepen_within_bytes", deepen_within_bytes},
           {"fit", fit.enabled ? nlohmann::json{{"iterations", fit.iterations},
                                                {"prior", fit.prior},
                                                {"alpha_weight", fit.alpha_weight},
@@ -208,6 +210,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
                   Str("--levels auto: ", options.levels, " levels (the finest texel about one photo pixel)"));
   options.Check();
   CheckReconstructInput(input, options);
+  const std::optional<DeepeningRule> deepening = DeepeningFor(input, options);
+  const int ceiling = deepening ? DeepeningCeiling(input, options) : options.levels;
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   Volume volume;
   arena.execute([&] {
@@ -218,7 +222,8 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
     const GridFrame frame = RootCube(input.bounds_min, input.bounds_max, options.margin, options.branching);
 
     const auto solve_start = Clock::now();
-    const OpacityResult solved = EstimateOpacity(frame, input.views, mattes, options.levels, options.opacity, progress);
+    const OpacityResult solved = EstimateOpacity(frame, input.views, mattes, ceiling, options.opacity, progress,
+                                                 deepening ? &*deepening : nullptr);
     const auto billboard_start = Clock::now();
     if (stats) {
       stats->solve_seconds = std::chrono::duration<double>(billboard_start - solve_start).count();
@@ -230,9 +235,9 @@ Volume Reconstruct(const ReconstructInput& input, const ReconstructOptions& requ
     volume.size = frame.size;
     volume.branching = options.branching;
     volume.texels = options.texels;
-    volume.levels.resize(options.levels);
-    for (int l = 0; l < options.levels; ++l) {
-      volume.levels[l].resolution = frame.Resolution(l);
+    volume.levels.resize(solved.levels.size());
+    for (size_t l = 0; l < solved.levels.size(); ++l) {
+      volume.levels[l].resolution = frame.Resolution(int(l));
       volume.levels[l].cells = solved.levels[l].cells;
       volume.levels[l].density = solved.levels[l].density;
     }

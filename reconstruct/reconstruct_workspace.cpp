@@ -169,6 +169,7 @@ Volume ReconstructWorkspace(const fs::path& dir, const ReconstructWorkspaceOptio
   Volume volume = Reconstruct(input, reconstruct, &progress);
   nlohmann::json recorded = ResolveLevels(input, reconstruct).ToJson();
   if (reconstruct.auto_levels) recorded["levels_auto"] = true;
+  recorded["levels"] = volume.levels.size();  // deepened, or as asked
   WriteVolume(out, volume, {{"stage", "reconstruct"}, {"options", recorded}}, options.force);
   progress.Say("reconstruct", Str("wrote ", out.string()));
   return volume;
