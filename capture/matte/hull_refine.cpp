@@ -201,13 +201,15 @@ Image8 MatteInsideHull(const Image8& photo, const Image8& old_matte, const Image
 namespace {
 
 // What lies behind the hull near its projection, where the photo is matted again; the pixels the
-// far and ground hypotheses explained (`backdrop`) are not asked again.
+// far and ground hypotheses explained (`backdrop`) are not asked again, nor those `spared` (may be
+// empty) from parallax.
 Image8 BehindHullNearIt(const std::vector<View>& views, const std::vector<Image8>& photos,
                         const std::vector<HullProjection>& hulls, size_t target, const Image8& backdrop,
-                        const BackdropOptions& options) {
+                        const cv::Mat& spared, const BackdropOptions& options) {
   cv::Mat region;
   cv::dilate(matte::View(hulls[target].mask), region, matte::Disc(HullBand(photos[target])));
   region.setTo(0, matte::View(backdrop) != 0);
+  if (!spared.empty()) region.setTo(0, spared);
   return ExplainedBehindHull(views, photos, hulls, target, matte::ToImage8(region), options);
 }
 
@@ -291,9 +293,8 @@ std::vector<std::string> RematteUntrusted(const std::vector<View>& views, const 
     // hazy hills claimed the aspen's thin trunk (held-out recall 0.947 -> 0.837).
     if (sweep)
       matte::View(rematted[t])
-          .setTo(0, WithoutSpared(
-                        matte::View(BehindHullNearIt(views, photos, hulls, i, known.parallax[i], options.backdrop)),
-                        spared));
+          .setTo(0, matte::View(
+                        BehindHullNearIt(views, photos, hulls, i, known.parallax[i], spared, options.backdrop)) != 0);
   });
   std::vector<std::string> names;
   for (size_t t = 0; t < targets.size(); ++t) {
