@@ -126,8 +126,10 @@ void AddCompressOptions(CLI::App& command, CompressOptions& compress) {
   AddOption(command, "--codebook", compress.colour_codebook);
   AddOption(command, "--alpha-codebook", compress.alpha_codebook);
   AddChoice(command, "--space", compress.space, {{"lab", ColourSpace::kLab}, {"rgb", ColourSpace::kRgb}});
-  AddChoice(command, "--gla", compress.rule,
-            {{"modified", CodewordRule::kClosestMember}, {"classic", CodewordRule::kCentroid}});
+  const std::vector<std::pair<std::string, CodewordRule>> rules{{"classic", CodewordRule::kCentroid},
+                                                                {"modified", CodewordRule::kClosestMember}};
+  AddChoice(command, "--gla", compress.colour_rule, rules);
+  AddChoice(command, "--alpha-gla", compress.alpha_rule, rules);
   AddFlag(command, "--no-alpha-weighted", compress.alpha_weighted);
   AddFlag(command, "--no-codebook-trade", compress.trade_codebooks);
   AddOption(command, "--gla-tolerance", compress.tolerance);

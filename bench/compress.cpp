@@ -110,7 +110,8 @@ int main(int argc, char** argv) {
       const std::vector<Variant> variants = {{"RGB-GLA", ColourSpace::kRgb, CodewordRule::kCentroid, false},
                                              {"Lab-GLA", ColourSpace::kLab, CodewordRule::kCentroid, false},
                                              {"Lab-modified", ColourSpace::kLab, CodewordRule::kClosestMember, false},
-                                             {"Lab-mod-alphaw", ColourSpace::kLab, CodewordRule::kClosestMember, true}};
+                                             {"Lab-mod-alphaw", ColourSpace::kLab, CodewordRule::kClosestMember, true},
+                                             {"Lab-GLA-alphaw", ColourSpace::kLab, CodewordRule::kCentroid, true}};
       std::printf("Texture PSNR (dB, premultiplied RGBA8 over all billboards; alpha codebook = colour size)\n");
       std::printf("VQ = 8-bit codewords, DXT5 = fetched from the DXT5 atlas\n");
       std::printf("%8s", "size");
@@ -144,11 +145,13 @@ int main(int argc, char** argv) {
       const uint64_t raw_file = SerializeAsset(result.asset).size();
       const uint64_t zstd_file = SerializeAsset(result.asset, zstd).size();
       const AssetBytes bytes = CountAssetBytes(result.asset, raw_file);
-      std::printf("\nDefault compress (codebook %d / %d, %s, %s GLA%s): %.1f s, PSNR %.2f dB VQ, %.2f dB DXT5\n",
-                  defaults.colour_codebook, defaults.alpha_codebook,
-                  defaults.space == ColourSpace::kLab ? "lab" : "rgb", CodewordRuleName(defaults.rule).c_str(),
-                  defaults.alpha_weighted ? ", alpha-weighted" : "", compress_seconds, result.stats.psnr_vq,
-                  result.stats.psnr_dxt5);
+      std::printf(
+          "\nDefault compress (codebook %d / %d, %s, %s colour GLA, %s alpha GLA%s): %.1f s, PSNR %.2f dB VQ, %.2f dB "
+          "DXT5\n",
+          defaults.colour_codebook, defaults.alpha_codebook, defaults.space == ColourSpace::kLab ? "lab" : "rgb",
+          CodewordRuleName(defaults.colour_rule).c_str(), CodewordRuleName(defaults.alpha_rule).c_str(),
+          defaults.alpha_weighted ? ", alpha-weighted" : "", compress_seconds, result.stats.psnr_vq,
+          result.stats.psnr_dxt5);
       std::printf("%s", DescribeAsset(result.asset, bytes).c_str());
       std::printf("  on disk with --zstd          %llu bytes\n", static_cast<unsigned long long>(zstd_file));
       std::printf(

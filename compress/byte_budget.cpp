@@ -1,6 +1,7 @@
 #include "compress/byte_budget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -30,16 +31,23 @@ std::vector<std::pair<int, int>> CodebookLadder(const CompressOptions& options) 
 // where the leaves' colours are few and their shapes many (the demo oak: 16 / 1024 fits where
 // 128 / 512 does not, as alpha indices compress worse, and gains 0.9 dB texture PSNR over
 // 256 / 256). So for each doubling of the alpha codebook, up to `largest_alpha`, the largest
-// colour codebook that still fits is found by bisection, down to kSmallestTradedColour; the pair
-// with the best texture PSNR (as the renderer fetches it) is kept. The search stops at the first
-// alpha size that gains nothing or for which no colour codebook fits.
+// colour codebook that still fits, no larger than the last pair's, is found by bisection, down to
+// kSmallestTradedColour; the pair with the best texture PSNR (as the renderer fetches it) is kept.
+// The search stops at the first alpha size that gains nothing or for which no colour codebook fits.
+// A pair known not to fit is not compressed: doubling the alpha codebook alone adds at least half a
+// bit per billboard (the oak: 1.4 bits), so the last pair's colour size is skipped when that would
+// not fit, which spares training an alpha codebook twice the size for nothing.
 template <class Attempt>
-BudgetedCompression TradeColourForAlpha(BudgetedCompression best, int largest_alpha, const Attempt& attempt) {
+BudgetedCompression TradeColourForAlpha(BudgetedCompression best, int largest_alpha, uint64_t max_bytes,
+                                        const Attempt& attempt) {
   constexpr int kSmallestTradedColour = 16;
   int colour_limit = best.kept.colour_codebook;  // a larger alpha codebook leaves room for no more colour
   for (int alpha = best.kept.alpha_codebook * 2; alpha <= largest_alpha; alpha *= 2) {
+    const uint64_t same_colour_at_least = best.bytes.size() + best.result.stats.billboards / 16;
     std::vector<int> colours;  // descending, so the assets' sizes descend too
-    for (int colour = colour_limit / 2; colour >= kSmallestTradedColour; colour /= 2) colours.push_back(colour);
+    for (int colour = same_colour_at_least > max_bytes ? colour_limit / 2 : colour_limit;
+         colour >= kSmallestTradedColour; colour /= 2)
+      colours.push_back(colour);
     std::optional<BudgetedCompression> fitting;
     size_t low = 0, high = colours.size();  // the first index that fits, or colours.size()
     while (low < high) {
@@ -60,6 +68,15 @@ BudgetedCompression TradeColourForAlpha(BudgetedCompression best, int largest_al
 }
 
 }  // namespace
+
+size_t PredictedRung(const std::vector<std::pair<int, int>>& ladder, size_t billboards, uint64_t max_bytes) {
+  if (max_bytes == 0) return 0;
+  for (size_t rung = 0; rung < ladder.size(); ++rung) {
+    const double bits = std::ceil(std::log2(ladder[rung].first)) + std::ceil(std::log2(ladder[rung].second));
+    if (double(billboards) * bits / 8 <= double(max_bytes)) return rung;
+  }
+  return ladder.size() - 1;
+}
 
 BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOptions& options,
                                          const AssetSerializer& serialize, Progress* progress) {
@@ -84,27 +101,29 @@ BudgetedCompression CompressWithinBudget(const Volume& volume, const CompressOpt
     return out;
   };
   // Smaller codebooks make smaller files (fewer bits per index), so the largest rung that fits is
-  // found by bisection: two or three compressions instead of one per rung. The smallest rung is
-  // kept when none fits.
-  size_t low = 0, high = ladder.size() - 1;
-  std::optional<BudgetedCompression> at_high;
-  while (low < high) {
-    const size_t middle = (low + high) / 2;
-    BudgetedCompression tried = attempt(ladder[middle].first, ladder[middle].second);
-    if (tried.fits) {
-      high = middle;
-      at_high = std::move(tried);
-    } else {
-      low = middle + 1;
+  // found by walking from the rung the index bits predict to the boundary: usually one or two
+  // compressions, and none of a rung far too large to fit (the oak's 512 / 512: 18 s). The
+  // smallest rung is kept when none fits.
+  size_t rung = PredictedRung(ladder, CountBillboards(volume), options.max_bytes);
+  BudgetedCompression kept = attempt(ladder[rung].first, ladder[rung].second);
+  if (kept.fits) {
+    while (rung > 0) {  // larger codebooks while they fit
+      BudgetedCompression larger = attempt(ladder[rung - 1].first, ladder[rung - 1].second);
+      if (!larger.fits) break;
+      kept = std::move(larger);
+      --rung;
+    }
+  } else {
+    while (!kept.fits && rung + 1 < ladder.size()) {  // smaller ones until one fits
+      ++rung;
+      kept = attempt(ladder[rung].first, ladder[rung].second);
     }
   }
-  if (!at_high || at_high->kept.colour_codebook != ladder[high].first ||
-      at_high->kept.alpha_codebook != ladder[high].second)
-    at_high = attempt(ladder[high].first, ladder[high].second);
-  if (options.trade_codebooks && options.max_bytes != 0 && at_high->fits && high > 0)
-    at_high = TradeColourForAlpha(std::move(*at_high), options.alpha_codebook, attempt);
-  at_high->attempts = attempts;
-  return std::move(*at_high);
+  // rung > 0: the rung above was over, so the budget binds here.
+  if (options.trade_codebooks && options.max_bytes != 0 && kept.fits && rung > 0)
+    kept = TradeColourForAlpha(std::move(kept), options.alpha_codebook, options.max_bytes, attempt);
+  kept.attempts = attempts;
+  return kept;
 }
 
 }  // namespace voltree

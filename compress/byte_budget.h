@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "compress/compress_volume.h"
 #include "core/progress.h"
@@ -29,6 +31,13 @@ struct BudgetedCompression {
 
 // Finishes an asset (provenance) and serializes it; called once per attempt.
 using AssetSerializer = std::function<std::string(VtreeAsset&)>;
+
+// The first rung of `ladder` (codebook pairs, largest first) that the budget tries: the largest whose
+// index bits alone fit max_bytes (0: the first). Each billboard stores a colour and an alpha index,
+// which are most of a large asset's bytes and compress little (the demo oak at 128 / 128: 960 KB of
+// index bits in a 1 049 KB file), so the boundary is usually this rung or the next, and no rung far
+// too large is compressed for nothing.
+size_t PredictedRung(const std::vector<std::pair<int, int>>& ladder, size_t billboards, uint64_t max_bytes);
 
 // Compresses `volume` with the largest codebooks whose serialized asset fits options.max_bytes
 // (0: no budget, options' codebooks as given): options' sizes, or both halved, down to

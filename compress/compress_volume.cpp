@@ -19,10 +19,10 @@ void CheckCompressible(const Volume& volume) {
   if (CountBillboards(volume) == 0) Fail("volume: no billboards to compress (everything was pruned?)");
 }
 
-GlaOptions MakeGlaOptions(const CompressOptions& options, int codebook_size, uint64_t seed) {
+GlaOptions MakeGlaOptions(const CompressOptions& options, int codebook_size, CodewordRule rule, uint64_t seed) {
   GlaOptions gla;
   gla.codebook_size = codebook_size;
-  gla.rule = options.rule;
+  gla.rule = rule;
   gla.tolerance = options.tolerance;
   gla.max_iterations = options.max_iterations;
   gla.seed = seed;
@@ -64,14 +64,19 @@ void CompressOptions::Check() const {
   if (max_iterations < 1) FailOption("CompressOptions.max_iterations", "must be at least 1, got ", max_iterations);
   if (smallest_budget_codebook < 1 || smallest_budget_codebook > 65536)
     FailOption("CompressOptions.smallest_budget_codebook", "must be in 1..65536, got ", smallest_budget_codebook);
-  MakeGlaOptions(*this, colour_codebook, seed).Check();
+  MakeGlaOptions(*this, colour_codebook, colour_rule, seed).Check();
 }
 
 nlohmann::json CompressOptions::ToJson() const {
-  return {{"codebook", colour_codebook},       {"alpha_codebook", alpha_codebook},
-          {"space", ColourSpaceName(space)},   {"gla", CodewordRuleName(rule)},
-          {"alpha_weighted", alpha_weighted},  {"tolerance", tolerance},
-          {"max_iterations", max_iterations},  {"seed", seed},
+  return {{"codebook", colour_codebook},
+          {"alpha_codebook", alpha_codebook},
+          {"space", ColourSpaceName(space)},
+          {"gla", CodewordRuleName(colour_rule)},
+          {"alpha_gla", CodewordRuleName(alpha_rule)},
+          {"alpha_weighted", alpha_weighted},
+          {"tolerance", tolerance},
+          {"max_iterations", max_iterations},
+          {"seed", seed},
           {"black_threshold", black_threshold}};
 }
 
@@ -128,14 +133,15 @@ CompressResult CompressVolume(const Volume& volume, const CompressOptions& optio
   if (!trained->colour.contains(options.colour_codebook)) {
     if (!trained->colour_set)
       trained->colour_set = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
-    trained->colour[options.colour_codebook] =
-        RunGla(*trained->colour_set, MakeGlaOptions(options, options.colour_codebook, options.seed),
-               Reporter(progress, "colour"));
+    trained->colour[options.colour_codebook] = RunGla(
+        *trained->colour_set, MakeGlaOptions(options, options.colour_codebook, options.colour_rule, options.seed),
+        Reporter(progress, "colour"));
   }
   if (!trained->alpha.contains(options.alpha_codebook)) {
     if (!trained->alpha_set) trained->alpha_set = AlphaVectors(texels, texel_count);
     trained->alpha[options.alpha_codebook] = RunGla(
-        *trained->alpha_set, MakeGlaOptions(options, options.alpha_codebook, options.seed ^ 0x9E3779B97F4A7C15ull),
+        *trained->alpha_set,
+        MakeGlaOptions(options, options.alpha_codebook, options.alpha_rule, options.seed ^ 0x9E3779B97F4A7C15ull),
         Reporter(progress, "alpha"));
   }
   stats.colour = trained->colour.at(options.colour_codebook);

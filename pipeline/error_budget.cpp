@@ -119,8 +119,16 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
   options.colour_codebook = recorded.value("codebook", int(asset.colour_codebook_size));
   options.alpha_codebook = recorded.value("alpha_codebook", int(asset.alpha_codebook_size));
   options.space = recorded.value("space", std::string("lab")) == "rgb" ? ColourSpace::kRgb : ColourSpace::kLab;
-  options.rule = recorded.value("gla", std::string("modified")) == "classic" ? CodewordRule::kCentroid
-                                                                             : CodewordRule::kClosestMember;
+  // Assets from before the two rules were apart record one "gla" for both codebooks.
+  const auto recorded_rule = [&recorded](const char* key, CodewordRule absent) {
+    try {
+      return ParseCodewordRule(recorded.value(key, CodewordRuleName(absent)));
+    } catch (const Error& error) {
+      Fail("the asset's provenance, options.", key, ": ", error.what());
+    }
+  };
+  options.colour_rule = recorded_rule("gla", CodewordRule::kClosestMember);
+  options.alpha_rule = recorded_rule("alpha_gla", options.colour_rule);
   options.alpha_weighted = recorded.value("alpha_weighted", false);
   options.tolerance = recorded.value("tolerance", options.tolerance);
   options.max_iterations = recorded.value("max_iterations", options.max_iterations);
@@ -128,6 +136,10 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
   options.black_threshold = recorded.value("black_threshold", options.black_threshold);
   progress.Say("budget", "recompressing the volume for the codewords before DXT5");
   const CompressResult again = CompressVolume(volume, options);
+  if (again.asset.atlas.dxt5 != asset.atlas.dxt5)
+    Fail(volume_path.string(),
+         " recompressed with the options the asset records gives other codewords than the asset's, so the vq "
+         "step cannot be measured: rebuild the asset from this volume ('voltree compress --force')");
   std::vector<CodewordUse> uses;
   for (const auto& level : again.asset.levels)
     for (const auto& b : level.billboards) uses.push_back({b.colour, b.alpha});

@@ -7,7 +7,7 @@
 //   (d) dxt5      (c) as fetched from the asset's DXT5 atlas
 //   (e) lod       the asset drawn by the GPU renderer with its own level of detail
 // (c) recompresses the workspace's volume with the options the asset records (deterministic:
-// the same codebooks as the asset's), so the codewords before DXT5 are known.
+// the same codebooks as the asset's, or the budget refuses), so the codewords before DXT5 are known.
 #pragma once
 
 #include <filesystem>

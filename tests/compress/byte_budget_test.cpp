@@ -60,6 +60,20 @@ TEST(ByteBudget, KeepsTheLargestCodebooksThatFit) {
   EXPECT_EQ(ParseAsset(between.bytes, "budget").colour_codebook_size, 128u);
 }
 
+// The search starts where the index bits alone fit: the demo oak's 548 351 billboards in 1 MiB
+// start at 128 / 128 (14 bits each, 960 KB), not at 512 / 512, which is 18 s of compression.
+TEST(ByteBudget, StartsAtTheLargestRungWhoseIndexBitsFit) {
+  const std::vector<std::pair<int, int>> ladder = {{2048, 2048}, {1024, 1024}, {512, 512},
+                                                   {256, 256},   {128, 128},   {64, 64}};
+  EXPECT_EQ(PredictedRung(ladder, 548351, 1 << 20), 4u);
+  EXPECT_EQ(PredictedRung(ladder, 199000, 1 << 20), 0u);  // the sparse aspen: 2048 / 2048 at once
+  EXPECT_EQ(PredictedRung(ladder, 548351, 0), 0u);        // no budget
+  EXPECT_EQ(PredictedRung(ladder, 548351, 1000), 5u);     // nothing fits: the smallest
+  // Exactly the index bits count as fitting: 1 000 billboards at 22 bits are 2 750 bytes.
+  EXPECT_EQ(PredictedRung(ladder, 1000, 2750), 0u);
+  EXPECT_EQ(PredictedRung(ladder, 1000, 2749), 1u);
+}
+
 TEST(ByteBudget, OverEvenAtTheSmallestSaysSo) {
   const Volume volume = BudgetVolume();
   const BudgetedCompression out = CompressWithinBudget(volume, BudgetOptions(1000), SerializeRaw);
@@ -106,7 +120,21 @@ TEST(ByteBudget, TradesColourCodewordsForAlphaOnesWhereTheTexturePsnrGains) {
   EXPECT_EQ(traded.kept.alpha_codebook, 256);
   EXPECT_GT(traded.result.stats.psnr_dxt5, equal.result.stats.psnr_dxt5 + 1);  // 33.9 against 31.6 dB here
   EXPECT_TRUE(traded.bytes == direct_bytes);
-  EXPECT_LE(traded.attempts, equal.attempts + 2);  // bisection over 64, 32, 16
+  // Bisection over 128 ... 16 at 256 alpha codewords; 16 / 512 is known not to fit, so not tried.
+  EXPECT_LE(traded.attempts, equal.attempts + 2);
+  // The colour codebook may keep its size while the alpha one doubles: a budget just over the
+  // 128 / 256 asset keeps that pair, not one with half the colour codewords.
+  CompressOptions at_128_256 = BudgetOptions(0);
+  at_128_256.colour_codebook = 128;
+  VtreeAsset roomy_asset = CompressVolume(volume, at_128_256).asset;
+  const std::string roomy_bytes = SerializeAsset(roomy_asset);
+  ASSERT_GT(BudgetBytesAt(volume, 256).size(), roomy_bytes.size() + 1);
+  CompressOptions roomy_budget = trading;
+  roomy_budget.max_bytes = roomy_bytes.size() + 1;
+  const BudgetedCompression roomy = CompressWithinBudget(volume, roomy_budget, SerializeRaw);
+  EXPECT_EQ(roomy.kept.colour_codebook, 128);
+  EXPECT_EQ(roomy.kept.alpha_codebook, 256);
+  EXPECT_TRUE(roomy.bytes == roomy_bytes);
   // Where the alpha codewords gain nothing, the equal sizes stay: the flat greens made them gain.
   const BudgetedCompression leafy = CompressWithinBudget(BudgetVolume(), trading, SerializeRaw);
   EXPECT_EQ(leafy.kept.colour_codebook, leafy.kept.alpha_codebook);

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
+
+#include "compress/billboard_vectors.h"
 #include "compress/synthetic_volume.h"
 #include "core/error.h"
 #include "needs_two_cores.h"
@@ -72,6 +75,39 @@ TEST(CompressVolume, SameBytesWhateverTheThreads) {
     const std::string threaded = SerializeAsset(CompressVolume(volume, options).asset);
     const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     EXPECT_EQ(SerializeAsset(CompressVolume(volume, options).asset), threaded) << (weighted ? "weighted" : "plain");
+  }
+}
+
+// Each codebook keeps its own codeword rule: the modified one's codewords are training vectors,
+// the classic one's are means that no training vector equals; the asset records both.
+TEST(CompressVolume, EachCodebookFollowsItsOwnRule) {
+  const Volume volume = TestVolume();
+  const std::vector<uint8_t> texels = GatherTexels(volume);
+  const int texel_count = volume.texels * volume.texels;
+  const auto members = [](const TrainingSet& set, const Codebook& codebook) {
+    size_t found = 0;
+    for (size_t k = 0; k < codebook.size(); ++k)
+      for (size_t i = 0; i < set.size(); ++i)
+        if (std::equal(set.Vector(i), set.Vector(i) + set.dimension, codebook.Codeword(k))) {
+          ++found;
+          break;
+        }
+    return found;
+  };
+  for (const bool colour_classic : {true, false}) {
+    CompressOptions options = SmallCodebooks();
+    options.colour_rule = colour_classic ? CodewordRule::kCentroid : CodewordRule::kClosestMember;
+    options.alpha_rule = colour_classic ? CodewordRule::kClosestMember : CodewordRule::kCentroid;
+    const CompressResult result = CompressVolume(volume, options);
+    const TrainingSet colours = ColourVectors(texels, texel_count, options.space, options.alpha_weighted);
+    const TrainingSet alphas = AlphaVectors(texels, texel_count);
+    const Codebook &colour = result.stats.colour.codebook, &alpha = result.stats.alpha.codebook;
+    // A cluster of one member is its own mean, so the classic codebook may hold a few members.
+    EXPECT_EQ(members(colours, colour) == colour.size(), !colour_classic);
+    EXPECT_EQ(members(alphas, alpha) == alpha.size(), colour_classic);
+    const nlohmann::json& recorded = result.asset.provenance.at("options");
+    EXPECT_EQ(recorded.at("gla"), colour_classic ? "classic" : "modified");
+    EXPECT_EQ(recorded.at("alpha_gla"), colour_classic ? "modified" : "classic");
   }
 }
 
