@@ -214,7 +214,7 @@ std::vector<OptionSpec> CompressFlags() {
       {"--no-codebook-trade",
        {"CompressOptions.trade_codebooks"},
        "Under --max-bytes, keep both codebooks the same size instead of trading colour codewords for alpha ones "
-       "where the texture PSNR gains (the demo oak: 16 / 1024 instead of 256 / 256)"},
+       "where the texture PSNR gains (the demo oak: 16 / 1024 instead of 64 / 64)"},
       {"--gla-tolerance", {"CompressOptions.tolerance"}, "Stop GLA when the relative distortion drop is below this"},
       {"--gla-iterations", {"CompressOptions.max_iterations"}, "At most this many GLA iterations"},
       {"--gla-seed", {"CompressOptions.seed"}, "Seed of the codebooks' k-means++ initialization"},
