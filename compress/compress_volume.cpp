@@ -80,6 +80,29 @@ nlohmann::json CompressOptions::ToJson() const {
           {"black_threshold", black_threshold}};
 }
 
+CompressOptions CompressOptions::FromJson(const nlohmann::json& recorded, const CompressOptions& absent) {
+  const auto rule = [&recorded](const char* key, CodewordRule fallback) {
+    try {
+      return ParseCodewordRule(recorded.value(key, CodewordRuleName(fallback)));
+    } catch (const Error& error) {
+      Fail("the asset's provenance, options.", key, ": ", error.what());
+    }
+  };
+  CompressOptions options = absent;
+  options.colour_codebook = recorded.value("codebook", absent.colour_codebook);
+  options.alpha_codebook = recorded.value("alpha_codebook", absent.alpha_codebook);
+  options.space =
+      recorded.value("space", ColourSpaceName(absent.space)) == "rgb" ? ColourSpace::kRgb : ColourSpace::kLab;
+  options.colour_rule = rule("gla", absent.colour_rule);
+  options.alpha_rule = rule("alpha_gla", options.colour_rule);
+  options.alpha_weighted = recorded.value("alpha_weighted", absent.alpha_weighted);
+  options.tolerance = recorded.value("tolerance", absent.tolerance);
+  options.max_iterations = recorded.value("max_iterations", absent.max_iterations);
+  options.seed = recorded.value("seed", absent.seed);
+  options.black_threshold = recorded.value("black_threshold", absent.black_threshold);
+  return options;
+}
+
 nlohmann::json CompressOptions::SettingsJson() const {
   nlohmann::json settings = ToJson();
   settings["zstd"] = zstd;

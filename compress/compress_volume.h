@@ -45,7 +45,10 @@ struct CompressOptions {
   bool trade_codebooks = true;
 
   void Check() const;
-  nlohmann::json ToJson() const;        // for the asset's provenance: what shapes its content, not the file
+  nlohmann::json ToJson() const;  // for the asset's provenance: what shapes its content, not the file
+  // The options ToJson() recorded. A key an older release did not record keeps `absent`'s value,
+  // and a missing "alpha_gla" the recorded "gla" (one rule served both codebooks then).
+  static CompressOptions FromJson(const nlohmann::json& recorded, const CompressOptions& absent);
   nlohmann::json SettingsJson() const;  // ToJson() and the file's settings: what run's recipe and demo.json record
 };
 

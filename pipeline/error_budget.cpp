@@ -113,27 +113,15 @@ std::vector<BudgetRow> MeasureErrorBudget(const fs::path& workspace, const Vtree
          " does not match the asset (levels, views or billboards differ): rebuild the asset "
          "from this volume ('voltree compress --force') before measuring its budget");
 
-  // The codewords before DXT5: recompress with the asset's recorded options (same codebooks).
-  CompressOptions options;
-  const nlohmann::json& recorded = asset.provenance.value("options", nlohmann::json::object());
-  options.colour_codebook = recorded.value("codebook", int(asset.colour_codebook_size));
-  options.alpha_codebook = recorded.value("alpha_codebook", int(asset.alpha_codebook_size));
-  options.space = recorded.value("space", std::string("lab")) == "rgb" ? ColourSpace::kRgb : ColourSpace::kLab;
-  // Assets from before the two rules were apart record one "gla" for both codebooks.
-  const auto recorded_rule = [&recorded](const char* key, CodewordRule absent) {
-    try {
-      return ParseCodewordRule(recorded.value(key, CodewordRuleName(absent)));
-    } catch (const Error& error) {
-      Fail("the asset's provenance, options.", key, ": ", error.what());
-    }
-  };
-  options.colour_rule = recorded_rule("gla", CodewordRule::kClosestMember);
-  options.alpha_rule = recorded_rule("alpha_gla", options.colour_rule);
-  options.alpha_weighted = recorded.value("alpha_weighted", false);
-  options.tolerance = recorded.value("tolerance", options.tolerance);
-  options.max_iterations = recorded.value("max_iterations", options.max_iterations);
-  options.seed = recorded.value("seed", options.seed);
-  options.black_threshold = recorded.value("black_threshold", options.black_threshold);
+  // The codewords before DXT5: recompress with the asset's recorded options (same codebooks). What
+  // older releases did not record: the asset's codebook sizes, one modified rule, plain distances.
+  CompressOptions absent;
+  absent.colour_codebook = int(asset.colour_codebook_size);
+  absent.alpha_codebook = int(asset.alpha_codebook_size);
+  absent.colour_rule = CodewordRule::kClosestMember;
+  absent.alpha_weighted = false;
+  const CompressOptions options =
+      CompressOptions::FromJson(asset.provenance.value("options", nlohmann::json::object()), absent);
   progress.Say("budget", "recompressing the volume for the codewords before DXT5");
   const CompressResult again = CompressVolume(volume, options);
   if (again.asset.atlas.dxt5 != asset.atlas.dxt5)

@@ -111,6 +111,35 @@ TEST(CompressVolume, EachCodebookFollowsItsOwnRule) {
   }
 }
 
+// The provenance's options read back as written; an older asset's single "gla" serves both
+// codebooks; a rule that is neither is refused, naming the field.
+TEST(CompressOptions, ReadBackFromTheProvenance) {
+  CompressOptions written = SmallCodebooks();
+  written.space = ColourSpace::kRgb;
+  written.colour_rule = CodewordRule::kClosestMember;
+  written.alpha_rule = CodewordRule::kCentroid;
+  written.alpha_weighted = false;
+  written.tolerance = 0.01;
+  written.max_iterations = 7;
+  written.seed = 9;
+  written.black_threshold = 2;
+  const CompressOptions read = CompressOptions::FromJson(written.ToJson(), CompressOptions{});
+  EXPECT_EQ(read.ToJson(), written.ToJson());
+
+  CompressOptions absent;
+  absent.colour_codebook = 77;
+  const CompressOptions old = CompressOptions::FromJson({{"gla", "classic"}}, absent);
+  EXPECT_EQ(old.colour_codebook, 77);
+  EXPECT_EQ(old.colour_rule, CodewordRule::kCentroid);
+  EXPECT_EQ(old.alpha_rule, CodewordRule::kCentroid);
+  try {
+    CompressOptions::FromJson({{"alpha_gla", "median"}}, absent);
+    ADD_FAILURE() << "an unknown rule was read";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("options.alpha_gla"), std::string::npos) << error.what();
+  }
+}
+
 TEST(CompressVolume, RejectsEmptyVolumesAndBadOptions) {
   Volume empty;
   empty.levels.resize(1);
